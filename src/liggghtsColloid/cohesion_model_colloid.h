@@ -1,0 +1,378 @@
+/* ----------------------------------------------------------------------
+   colloidFoam LIGGGHTS plugin: colloidal surface forces as a LIGGGHTS
+   cohesion model, acting at a distance and in contact, particle-particle
+   and particle-wall (mesh and primitive walls).
+
+   Terms: van der Waals (vdw), electrostatic double layer (dl), normal
+   lubrication (lub). LIGGGHTS allows one cohesion model per pair style, so
+   each combination of terms is its own model, compiled separately: a term
+   that is off is not in the code at all, and the neighbour range grows
+   only with the terms that are on. Names as in the input script:
+     cohesion colloid/vdw | colloid/dl | colloid/lub | colloid/vdw/dl
+              | colloid/vdw/lub | colloid/dl/lub | colloid/vdw/dl/lub
+   Keyword (fix wall/gran only): groundedWall on|off (default off): a
+   grounded wall carries no double layer (seed 000: die and substrate).
+   Keyword (pair_style): timeStepCheck on|off (default on), see
+   checkTimeStep() and colloid_time_step.h.
+
+   The forces are the kernels' of src/colloidModels (SI); this file only
+   converts units (colloid_units.h) and applies the forces along the centre
+   line. Lubrication uses the kernels' pairwise implicit force with the DEM
+   step, with this pair's other normal forces (surface forces and contact)
+   inside the implicit update. Parameters (fix property/global, run units,
+   see README.md) are read at every run's init and checked by the kernels.
+------------------------------------------------------------------------- */
+
+#ifdef COHESION_MODEL
+// id = 16 + bit mask of the terms (1 vdw, 2 dl, 4 lub); the library uses
+// ids below 16
+COHESION_MODEL(COHESION_COLLOID_VDW,colloid/vdw,17)
+COHESION_MODEL(COHESION_COLLOID_DL,colloid/dl,18)
+COHESION_MODEL(COHESION_COLLOID_VDW_DL,colloid/vdw/dl,19)
+COHESION_MODEL(COHESION_COLLOID_LUB,colloid/lub,20)
+COHESION_MODEL(COHESION_COLLOID_VDW_LUB,colloid/vdw/lub,21)
+COHESION_MODEL(COHESION_COLLOID_DL_LUB,colloid/dl/lub,22)
+COHESION_MODEL(COHESION_COLLOID_VDW_DL_LUB,colloid/vdw/dl/lub,23)
+#else
+
+#ifndef COHESION_MODEL_COLLOID_H_
+#define COHESION_MODEL_COLLOID_H_
+
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+#include <vector>
+#include "atom.h"
+#include "contact_models.h"
+#include "cohesion_model_base.h"
+#include "fix_wall_gran.h"
+#include "modify.h"
+#include "neighbor.h"
+#include "update.h"
+#include "colloid_properties.h"
+#include "colloid_time_step.h"
+#include "colloid_units.h"
+#include "doubleLayer.H"
+#include "lubrication.H"
+#include "timeStepLimits.H"
+#include "vanDerWaals.H"
+
+namespace LIGGGHTS {
+namespace ContactModels {
+
+template<int Terms>
+class ColloidCohesion : public CohesionModelBase
+{
+    static const bool vdwOn = Terms & 1;
+    static const bool dlOn = Terms & 2;
+    static const bool lubOn = Terms & 4;
+    typedef Colloid::MicroUnits U;
+
+public:
+    ColloidCohesion(LAMMPS *lmp, IContactHistorySetup *hsetup, ContactModelBase *cmb, const char *name)
+    : CohesionModelBase(lmp, hsetup, cmb),
+      name_(name),
+      isWall_(cmb->is_wall()),
+      groundedWall_(false),
+      timeStepCheck_(true),
+      vdwInnerCutoff_(0.0),
+      nTypes_(0),
+      rangeSI_(0.0)
+    {}
+
+    void registerSettings(Settings & settings)
+    {
+        if (dlOn) settings.registerOnOff("groundedWall", groundedWall_, false);
+        settings.registerOnOff("timeStepCheck", timeStepCheck_, true);
+    }
+
+    void postSettings(IContactHistorySetup *, ContactModelBase *) {}
+
+    void connectToProperties(PropertyRegistry & registry)
+    {
+        Colloid::requireMicroUnits(update, error, name_);
+        Colloid::PropertyReader read(registry, modify, error, name_);
+        nTypes_ = registry.max_type();
+        rangeSI_ = 0.0;
+        if (vdwOn) readVanDerWaals(read);
+        if (dlOn && !(isWall_ && groundedWall_)) readDoubleLayer(read);
+        if (lubOn) readLubrication(read);
+
+        // pairs closer than factor*(Ri + Rj), walls closer than
+        // (factor - 1)*R, reach surfacesClose(): wide enough for the
+        // smallest particle against a wall covers every pair too
+        const double rMin = registry.min_radius();
+        if (!(rMin > 0.0))
+        {
+            char msg[256];
+            std::snprintf(msg, sizeof(msg),
+                "%s: the smallest particle radius is unknown (%g); create or "
+                "declare the particles before the run", name_, rMin);
+            error->all(FLERR, msg);
+        }
+        neighbor->register_contact_dist_factor(1.0 + rangeSI_/U::length/rMin);
+        if (isWall_) checkPrimitiveWallReach();
+        else checkTimeStep();
+    }
+
+    void beginPass(SurfacesIntersectData &, ForceData &, ForceData &) {}
+    void endPass(SurfacesIntersectData &, ForceData &, ForceData &) {}
+    void endSurfacesIntersect(SurfacesIntersectData &, ForceData &, ForceData &) {}
+
+    // in contact (overlap): the kernels hold their inner cut-off values;
+    // the normal model has already set the contact force sidata.Fn
+    void surfacesIntersect(SurfacesIntersectData & sidata, ForceData & i_forces, ForceData & j_forces)
+    {
+        apply(sidata, sidata.r, sidata.Fn*U::force, i_forces, j_forces);
+        if (sidata.contact_flags) *sidata.contact_flags |= CONTACT_COHESION_MODEL;
+    }
+
+    void surfacesClose(SurfacesCloseData & scdata, ForceData & i_forces, ForceData & j_forces)
+    {
+        const double r = std::sqrt(scdata.rsq);
+        if ((r - scdata.radsum)*U::length >= rangeSI_) return;
+        apply(scdata, r, 0.0, i_forces, j_forces);
+        scdata.has_force_update = true;
+        // no history at a distance: the pair is not a contact partner
+        if (scdata.contact_flags) *scdata.contact_flags &= ~CONTACT_COHESION_MODEL;
+    }
+
+private:
+    // r: centre distance, or centre-wall distance [run units];
+    // contactForce: normal contact force of the pair [N], repulsive > 0
+    void apply(SurfacesCloseData & d, double r, double contactForce, ForceData & i_forces, ForceData & j_forces)
+    {
+        const double h = (r - d.radsum)*U::length;
+        const double Ri = d.radi*U::length;
+        const double Rj = d.is_wall ? colloid::wallRadius : d.radj*U::length;
+        // unit normal from j (or the wall) to i
+        const double en[3] = {d.delta[0]/r, d.delta[1]/r, d.delta[2]/r};
+
+        double F = 0.0;  // [N], positive = repulsive
+        if (vdwOn) F += vdw_[pairIndex(d.itype, d.jtype)].force(Ri, Rj, h);
+        if (dlOn && !(d.is_wall && groundedWall_))
+            F += dl_[pairIndex(d.itype, d.jtype)].force(Ri, Rj, h);
+        if (lubOn)
+        {
+            // vn = dh/dt, negative on approach
+            const double vn = ((d.v_i[0] - d.v_j[0])*en[0] + (d.v_i[1] - d.v_j[1])*en[1]
+                             + (d.v_i[2] - d.v_j[2])*en[2])*U::velocity;
+            const double *rmass = atom->rmass;
+            const double mi = rmass[d.i]*U::mass;
+            const double mStar = d.is_wall ? mi : colloid::reducedMass(mi, rmass[d.j]*U::mass);
+            // the pair's other normal forces (surface forces, contact) go
+            // into the implicit update so that their pull is damped too
+            F += lub_.front().implicitForce(Ri, Rj, h, vn, mStar, update->dt*U::time, F + contactForce);
+        }
+
+        const double Fn = F/U::force;
+        for (int k = 0; k < 3; k++)
+        {
+            i_forces.delta_F[k] += Fn*en[k];
+            if (!d.is_wall) j_forces.delta_F[k] -= Fn*en[k];
+        }
+    }
+
+    // A primitive wall lists the particles within half the neighbour skin
+    // of it (mesh walls use the contact distance factor), so a skin
+    // shorter than twice the range would silently drop forces.
+    void checkPrimitiveWallReach()
+    {
+        const double range = rangeSI_/U::length;
+        for (int k = 0; k < modify->n_fixes_style("wall/gran"); k++)
+        {
+            FixWallGran *wall = static_cast<FixWallGran*>(modify->find_fix_style("wall/gran", k));
+            if (wall->is_mesh_wall() || 0.5*neighbor->skin >= range) continue;
+            char msg[512];
+            std::snprintf(msg, sizeof(msg),
+                "%s: primitive wall '%s' sees particles only within half the "
+                "neighbour skin (%g um) of it, less than the range of the "
+                "colloid forces (%g um); use 'neighbor %g bin' or larger, or a "
+                "mesh wall", name_, wall->id, 0.5*neighbor->skin, range, 2*range);
+            error->all(FLERR, msg);
+        }
+    }
+
+    // Limits for two of the lightest particles, printed by the pair style:
+    // the van der Waals "spring" at its inner cut-off (dt <= 1/10 of
+    // sqrt(m*/k)); with lubrication the pair is overdamped there and the
+    // explicit pull needs only dt <= 1/10 of c/k. The lubrication
+    // relaxation time m*/c is printed, not enforced (implicit).
+    void checkTimeStep()
+    {
+        using namespace colloid::timeStep;
+        Colloid::TimeStepCheck check(lmp, name_, timeStepCheck_);
+        if (vdwOn)
+        {
+            const double t = check.smallest([&](double m, double R, int type)
+            {
+                const double A = vdw_[pairIndex(type, type)].parameters().hamakerConstant;
+                const double k = vanDerWaalsStiffness(A, R/2, vdwInnerCutoff_);
+                if (!(k > 0.0)) return HUGE_VAL;
+                const double spring = springTime(m/2, k);
+                return lubOn ? std::max(spring, lub_.front().resistance(R, R, vdwInnerCutoff_)/k) : spring;
+            });
+            check.limit(lubOn ? "van der Waals spring at its inner cut-off, damped by lubrication"
+                              : "van der Waals spring at its inner cut-off", t, 0.1);
+        }
+        if (lubOn)
+        {
+            const colloid::LubricationParameters & p = lub_.front().parameters();
+            const double t = check.smallest([&](double m, double R, int)
+            {
+                return lubricationTime(m/2, p.viscosity, R/2, p.innerCutoff, p.outerCutoff);
+            });
+            check.limit("lubrication relaxation at its inner cut-off", t, 0.0);
+        }
+    }
+
+    int pairIndex(int itype, int jtype) const { return (itype - 1)*nTypes_ + (jtype - 1); }
+
+    void readVanDerWaals(Colloid::PropertyReader & read)
+    {
+        static const char *const names[] = {
+            "hamakerConstant", "hamakerConstant",
+            "retardationWavelength", "vdwRetardationWavelength",
+            "innerCutoff", "vdwInnerCutoff",
+            "outerCutoff", "vdwOuterCutoff", NULL};
+        colloid::VanDerWaalsParameters p;
+        p.form = read.selector("vdwForm", 2, "0 (Derjaguin) or 1 (full Hamaker)") == 0
+               ? colloid::VanDerWaalsForm::derjaguin : colloid::VanDerWaalsForm::hamaker;
+        p.retardationWavelength = read.optionalScalar("vdwRetardationWavelength",
+            p.retardationWavelength, U::length, -HUGE_VAL, HUGE_VAL, "m");
+        p.innerCutoff = read.optionalScalar("vdwInnerCutoff", p.innerCutoff, U::length, -HUGE_VAL, HUGE_VAL, "m");
+        // finite: it sets the neighbour range
+        p.outerCutoff = read.scalar("vdwOuterCutoff", U::length, 0.0, 1e-3, "m");
+        Colloid::TypePairTable A;
+        read.typePair("hamakerConstant", U::energy, -HUGE_VAL, HUGE_VAL, "J", A);
+        vdw_.clear();
+        int ti = 0, tj = 0;  // the type pair being checked, for messages
+        try
+        {
+            for (int i = 1; i <= nTypes_; i++)
+                for (int j = 1; j <= nTypes_; j++)
+                {
+                    ti = i;
+                    tj = j;
+                    p.hamakerConstant = A(i, j);
+                    vdw_.push_back(colloid::VanDerWaals(p));
+                }
+        }
+        catch (const std::invalid_argument & e)
+        {
+            read.kernelError(e, names, ti, tj);
+        }
+        rangeSI_ = std::max(rangeSI_, p.outerCutoff);
+        vdwInnerCutoff_ = p.innerCutoff;
+    }
+
+    void readDoubleLayer(Colloid::PropertyReader & read)
+    {
+        static const char *const names[] = {
+            "concentration", "saltConcentration",
+            "valence", "saltValence",
+            "temperature", "liquidTemperature",
+            "relativePermittivity", "relativePermittivity",
+            "zeta1", "zetaPotential",
+            "zeta2", "zetaPotential",
+            "innerCutoff", "doubleLayerInnerCutoff",
+            "outerCutoff", "doubleLayerOuterCutoff", NULL};
+        colloid::DoubleLayerParameters p;
+        p.form = read.selector("doubleLayerForm", 2,
+                     "0 (linear superposition) or 1 (Hogg-Healy-Fuerstenau)") == 0
+               ? colloid::DoubleLayerForm::linearSuperposition
+               : colloid::DoubleLayerForm::hoggHealyFuerstenau;
+        // no LIGGGHTS unit for amounts of substance: mol/m^3 (= mM) as in SI
+        p.electrolyte.concentration = read.scalar("saltConcentration", 1.0, -HUGE_VAL, HUGE_VAL, "mol/m^3");
+        const double valence = read.optionalScalar("saltValence", p.electrolyte.valence, 1.0, -HUGE_VAL, HUGE_VAL, "");
+        p.electrolyte.valence = static_cast<int>(std::lround(valence));
+        if (p.electrolyte.valence != valence)
+            read.kernelError(std::invalid_argument("parameter 'valence' must be a whole number"), names);
+        p.electrolyte.temperature = read.optionalScalar("liquidTemperature",
+            p.electrolyte.temperature, 1.0, -HUGE_VAL, HUGE_VAL, "K");
+        p.electrolyte.relativePermittivity = read.optionalScalar("relativePermittivity",
+            p.electrolyte.relativePermittivity, 1.0, -HUGE_VAL, HUGE_VAL, "");
+        p.innerCutoff = read.optionalScalar("doubleLayerInnerCutoff", p.innerCutoff, U::length, -HUGE_VAL, HUGE_VAL, "m");
+        p.outerCutoff = read.scalar("doubleLayerOuterCutoff", U::length, 0.0, 1e-3, "m");
+        std::vector<double> zeta;
+        read.perType("zetaPotential", 1.0, -HUGE_VAL, HUGE_VAL, "V", zeta);
+        dl_.clear();
+        int ti = 0, tj = 0;  // the type pair being checked, for messages
+        try
+        {
+            for (int i = 1; i <= nTypes_; i++)
+                for (int j = 1; j <= nTypes_; j++)
+                {
+                    ti = i;
+                    tj = j;
+                    p.zeta1 = zeta[i];
+                    p.zeta2 = zeta[j];
+                    dl_.push_back(colloid::DoubleLayer(p));
+                }
+        }
+        catch (const std::invalid_argument & e)
+        {
+            read.kernelError(e, names, ti, tj);
+        }
+        rangeSI_ = std::max(rangeSI_, p.outerCutoff);
+    }
+
+    void readLubrication(Colloid::PropertyReader & read)
+    {
+        static const char *const names[] = {
+            "viscosity", "liquidViscosity",
+            "innerCutoff", "lubricationInnerCutoff",
+            "outerCutoff", "lubricationOuterCutoff", NULL};
+        if (!atom->rmass_flag)
+            error->all(FLERR, "cohesion colloid/.../lub needs per-particle masses (atom_style granular)");
+        colloid::LubricationParameters p;
+        p.viscosity = read.scalar("liquidViscosity", U::viscosity, -HUGE_VAL, HUGE_VAL, "Pa s");
+        p.innerCutoff = read.optionalScalar("lubricationInnerCutoff", p.innerCutoff, U::length, -HUGE_VAL, HUGE_VAL, "m");
+        p.outerCutoff = read.optionalScalar("lubricationOuterCutoff", p.outerCutoff, U::length, -HUGE_VAL, HUGE_VAL, "m");
+        lub_.clear();
+        try
+        {
+            lub_.push_back(colloid::Lubrication(p));
+        }
+        catch (const std::invalid_argument & e)
+        {
+            read.kernelError(e, names);
+        }
+        rangeSI_ = std::max(rangeSI_, p.outerCutoff);
+    }
+
+    const char *name_;
+    const bool isWall_;
+    bool groundedWall_;
+    bool timeStepCheck_;
+    double vdwInnerCutoff_;                    // [m]
+    int nTypes_;
+    double rangeSI_;                           // largest gap with a force [m]
+    std::vector<colloid::VanDerWaals> vdw_;    // per type pair
+    std::vector<colloid::DoubleLayer> dl_;     // per type pair
+    std::vector<colloid::Lubrication> lub_;    // one, or none before init
+};
+
+// One specialisation per registered name; the name is the input's.
+#define COLLOID_COHESION_VARIANT(ID, TERMS, NAME) \
+    template<> \
+    class CohesionModel<ID> : public ColloidCohesion<TERMS> \
+    { \
+    public: \
+        CohesionModel(LAMMPS *lmp, IContactHistorySetup *hsetup, ContactModelBase *cmb) \
+        : ColloidCohesion<TERMS>(lmp, hsetup, cmb, "cohesion " NAME) {} \
+    };
+COLLOID_COHESION_VARIANT(COHESION_COLLOID_VDW, 1, "colloid/vdw")
+COLLOID_COHESION_VARIANT(COHESION_COLLOID_DL, 2, "colloid/dl")
+COLLOID_COHESION_VARIANT(COHESION_COLLOID_VDW_DL, 3, "colloid/vdw/dl")
+COLLOID_COHESION_VARIANT(COHESION_COLLOID_LUB, 4, "colloid/lub")
+COLLOID_COHESION_VARIANT(COHESION_COLLOID_VDW_LUB, 5, "colloid/vdw/lub")
+COLLOID_COHESION_VARIANT(COHESION_COLLOID_DL_LUB, 6, "colloid/dl/lub")
+COLLOID_COHESION_VARIANT(COHESION_COLLOID_VDW_DL_LUB, 7, "colloid/vdw/dl/lub")
+#undef COLLOID_COHESION_VARIANT
+
+}
+}
+
+#endif // COHESION_MODEL_COLLOID_H_
+#endif

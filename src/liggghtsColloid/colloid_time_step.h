@@ -1,0 +1,94 @@
+/* ----------------------------------------------------------------------
+   colloidFoam LIGGGHTS plugin: the time-step limits of the models, printed
+   at the start of a run and enforced.
+
+   Each model gives the time scale of its stiffest explicitly integrated
+   term for a pair of two particles like the lightest one present (the
+   smallest over the particles, all processes); the run stops when
+   dt > fraction x that time scale, unless the pair style says
+   "timeStepCheck off" (expert override: a warning instead). Terms that are
+   integrated implicitly (lubrication) are printed but not enforced. The
+   time scales are the kernels' (src/colloidModels/timeStepLimits.H); the
+   Stokes relaxation time belongs to the fluid coupling and is not here.
+------------------------------------------------------------------------- */
+
+#ifndef COLLOID_TIME_STEP_H
+#define COLLOID_TIME_STEP_H
+
+#include <mpi.h>
+#include <cstdio>
+#include "atom.h"
+#include "comm.h"
+#include "error.h"
+#include "lammps.h"
+#include "update.h"
+#include "colloid_units.h"
+
+namespace LIGGGHTS {
+namespace Colloid {
+
+class TimeStepCheck
+{
+public:
+    // model: the model's name as in the input; enforce: timeStepCheck on
+    TimeStepCheck(LAMMPS_NS::LAMMPS *lmp, const char *model, bool enforce)
+    : lmp_(lmp), model_(model), enforce_(enforce)
+    {}
+
+    // Smallest over the particles of scale(mass [kg], radius [m], type) [s];
+    // negative when there are no particles yet
+    template<class Scale>
+    double smallest(const Scale & scale) const
+    {
+        LAMMPS_NS::Atom *atom = lmp_->atom;
+        double local = HUGE_VAL;
+        for (int i = 0; i < atom->nlocal; i++)
+        {
+            const double t = scale(atom->rmass[i]*MicroUnits::mass, atom->radius[i]*MicroUnits::length, atom->type[i]);
+            if (t < local) local = t;
+        }
+        double global = HUGE_VAL;
+        MPI_Allreduce(&local, &global, 1, MPI_DOUBLE, MPI_MIN, lmp_->world);
+        return global < HUGE_VAL ? global : -1.0;
+    }
+
+    // print the time scale [s]; stop if dt > fraction x it (fraction > 0)
+    void limit(const char *what, double seconds, double fraction) const
+    {
+        if (seconds < 0.0) return;
+        const double dt = lmp_->update->dt*MicroUnits::time;
+        char msg[512];
+        std::snprintf(msg, sizeof(msg),
+            "%s: time-step limit, %s: %g s; dt = %g s is %.3g of it%s",
+            model_, what, seconds, dt, dt/seconds,
+            fraction > 0.0 ? "" : " (integrated implicitly, not enforced)");
+        print(msg);
+        if (!(fraction > 0.0) || dt <= fraction*seconds) return;
+        std::snprintf(msg, sizeof(msg),
+            "%s: the time step %g s exceeds %g x the %s (%g s); use 'timestep %g' "
+            "or less (run units us), or, at your own risk, 'timeStepCheck off' on "
+            "the pair_style line",
+            model_, dt, fraction, what, seconds, fraction*seconds/MicroUnits::time);
+        if (enforce_)
+            lmp_->error->all(FLERR, msg);
+        else
+            lmp_->error->warning(FLERR, msg);
+    }
+
+private:
+    void print(const char *msg) const
+    {
+        if (lmp_->comm->me != 0) return;
+        if (lmp_->screen) std::fprintf(lmp_->screen, "%s\n", msg);
+        if (lmp_->logfile) std::fprintf(lmp_->logfile, "%s\n", msg);
+    }
+
+    LAMMPS_NS::LAMMPS *lmp_;
+    const char *model_;
+    bool enforce_;
+};
+
+}
+}
+
+#endif

@@ -1,0 +1,43 @@
+/* ----------------------------------------------------------------------
+   colloidFoam LIGGGHTS plugin: model names and combinations, see
+   register_colloid_models.h.
+------------------------------------------------------------------------- */
+
+#include "register_colloid_models.h"
+#include "register_variant.h"
+
+using namespace LIGGGHTS;
+
+extern "C" void registerColloidModels()
+{
+    static bool done = false;
+    if (done) return;
+    done = true;
+
+    // the names the input script uses; ids and names come from the
+    // COHESION_MODEL / NORMAL_MODEL declarations of the plugin's headers
+    ContactModels::Factory & models = ContactModels::Factory::instance();
+    #define COHESION_MODEL(identifier, name, id) models.addCohesionModel(#name, id);
+    #include "cohesion_model_colloid.h"
+    #undef COHESION_MODEL
+    #define NORMAL_MODEL(identifier, name, id) models.addNormalModel(#name, id);
+    #include "normal_model_walton_braun.h"
+    #undef NORMAL_MODEL
+    #define TANGENTIAL_MODEL(identifier, name, id) models.addTangentialModel(#name, id);
+    #include "tangential_model_walton_braun.h"
+    #undef TANGENTIAL_MODEL
+
+    Colloid::registerHookeVariants();
+    Colloid::registerHertzVariants();
+    Colloid::registerWaltonBraunVariants();
+}
+
+namespace {
+
+// registers the models when the library is loaded
+struct RegisterAtLoad
+{
+    RegisterAtLoad() { registerColloidModels(); }
+} registerAtLoad;
+
+}

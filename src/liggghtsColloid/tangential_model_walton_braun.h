@@ -1,0 +1,230 @@
+/* ----------------------------------------------------------------------
+   colloidFoam LIGGGHTS plugin: Walton & Braun (1986) incremental-slip
+   tangential contact as a LIGGGHTS tangential model,
+   "tangential walton_braun" (kernel colloid::WaltonBraunTangential,
+   src/colloidModels/waltonBraun.H).
+
+   On a fix wall/gran line, "diRenzoDiMaio on" (default off) makes the
+   particle-wall contacts use Di Renzo & Di Maio (2005) instead (kernel
+   colloid::DiRenzoDiMaio, seed 000), with G* from the particle's and the
+   wall's youngsModulus and poissonsRatio.
+
+   Torques: the tangential force F acts at the contact point, cri (crj)
+   from the centre of i (j) along -en (+en): torque_i = -cri en x F,
+   torque_j = -crj en x F.
+
+   Parameters (fix property/global, run units micro, see README.md):
+     coefficientFriction  peratomtypepair  mu
+     tangentialStiffness  peratomtypepair  K_T0 [nN/um = 1e-3 N/m]
+     youngsModulus        peratomtype      [nN/um^2 = 1e3 Pa] (diRenzoDiMaio)
+     poissonsRatio        peratomtype      (diRenzoDiMaio)
+------------------------------------------------------------------------- */
+
+#ifdef TANGENTIAL_MODEL
+// the library uses ids below 16
+TANGENTIAL_MODEL(TANGENTIAL_WALTON_BRAUN,walton_braun,20)
+#else
+
+#ifndef TANGENTIAL_MODEL_WALTON_BRAUN_H_
+#define TANGENTIAL_MODEL_WALTON_BRAUN_H_
+
+#include <stdexcept>
+#include <vector>
+#include "contact_models.h"
+#include "tangential_model_base.h"
+#include "modify.h"
+#include "update.h"
+#include "colloid_properties.h"
+#include "colloid_units.h"
+#include "diRenzoDiMaio.H"
+#include "elasticMaterial.H"
+#include "waltonBraun.H"
+
+namespace LIGGGHTS {
+namespace ContactModels {
+
+template<>
+class TangentialModel<TANGENTIAL_WALTON_BRAUN> : public TangentialModelBase
+{
+    typedef Colloid::MicroUnits U;
+
+    // contact history layout (run units), see surfacesIntersect
+    enum { LOAD = 0, TURNING = 3, LAST_INCREMENT = 6, LAST_NORMAL = 9, LAST_STEP = 10, SIZE = 11 };
+
+public:
+    TangentialModel(LAMMPS *lmp, IContactHistorySetup *hsetup, class ContactModelBase *cmb)
+    : TangentialModelBase(lmp, hsetup, cmb),
+      isWall_(cmb->is_wall()),
+      diRenzoWall_(false),
+      nTypes_(0)
+    {
+        // vectors change sign when seen from the other particle ("1")
+        offset_ = hsetup->add_history_value("wbLoadX", "1");
+        hsetup->add_history_value("wbLoadY", "1");
+        hsetup->add_history_value("wbLoadZ", "1");
+        hsetup->add_history_value("wbTurningX", "1");
+        hsetup->add_history_value("wbTurningY", "1");
+        hsetup->add_history_value("wbTurningZ", "1");
+        hsetup->add_history_value("wbIncrementX", "1");
+        hsetup->add_history_value("wbIncrementY", "1");
+        hsetup->add_history_value("wbIncrementZ", "1");
+        hsetup->add_history_value("wbNormalForce", "0");
+        hsetup->add_history_value("wbTangentialStep", "0");
+    }
+
+    void registerSettings(Settings & settings)
+    {
+        settings.registerOnOff("diRenzoDiMaio", diRenzoWall_, false);
+    }
+
+    void postSettings(IContactHistorySetup *, ContactModelBase *) {}
+
+    void connectToProperties(PropertyRegistry & registry)
+    {
+        static const char *const names[] = {
+            "initialStiffness", "tangentialStiffness",
+            "friction", "coefficientFriction",
+            "effectiveShearModulus", "youngsModulus, poissonsRatio",
+            "youngsModulus", "youngsModulus",
+            "poissonsRatio", "poissonsRatio", NULL};
+        const char *caller = "tangential walton_braun";
+        Colloid::requireMicroUnits(update, error, caller);
+        Colloid::PropertyReader read(registry, modify, error, caller);
+        nTypes_ = registry.max_type();
+        Colloid::TypePairTable mu, kt;
+        read.typePair("coefficientFriction", 1.0, -HUGE_VAL, HUGE_VAL, "", mu);
+        read.typePair("tangentialStiffness", U::stiffness, -HUGE_VAL, HUGE_VAL, "N/m", kt);
+        const bool diRenzo = isWall_ && diRenzoWall_;
+        std::vector<double> E, nu;
+        if (diRenzo)
+        {
+            read.perType("youngsModulus", U::force/(U::length*U::length), -HUGE_VAL, HUGE_VAL, "Pa", E);
+            read.perType("poissonsRatio", 1.0, -HUGE_VAL, HUGE_VAL, "", nu);
+        }
+        waltonBraun_.clear();
+        diRenzo_.clear();
+        int ti = 0, tj = 0;  // the type pair being checked, for messages
+        try
+        {
+            for (int i = 1; i <= nTypes_; i++)
+                for (int j = 1; j <= nTypes_; j++)
+                {
+                    ti = i;
+                    tj = j;
+                    colloid::WaltonBraunTangentialParameters p;
+                    p.initialStiffness = kt(i, j);
+                    p.friction = mu(i, j);
+                    waltonBraun_.push_back(colloid::WaltonBraunTangential(p));
+                    if (!diRenzo) continue;
+                    colloid::ElasticMaterial a, b;
+                    a.youngsModulus = E[i];
+                    a.poissonsRatio = nu[i];
+                    b.youngsModulus = E[j];
+                    b.poissonsRatio = nu[j];
+                    a.check();
+                    b.check();
+                    colloid::DiRenzoDiMaioParameters q;
+                    q.effectiveShearModulus = colloid::effectiveShearModulus(a, b);
+                    q.friction = mu(i, j);
+                    diRenzo_.push_back(colloid::DiRenzoDiMaio(q));
+                }
+        }
+        catch (const std::invalid_argument & err)
+        {
+            read.kernelError(err, names, ti, tj);
+        }
+    }
+
+    void surfacesIntersect(const SurfacesIntersectData & sidata, ForceData & i_forces, ForceData & j_forces)
+    {
+        const colloid::Vec3 en = {{sidata.en[0], sidata.en[1], sidata.en[2]}};
+        double * const hist = &sidata.contact_history[offset_];
+        const double step = static_cast<double>(update->ntimestep);
+        // a contact not updated in the previous step is a new one
+        const bool newContact = step - hist[LAST_STEP] > 1.0;
+        const bool updateHistory = sidata.computeflag && sidata.shearupdate;
+        const double dt = update->dt;
+        const colloid::Vec3 ds = {{sidata.vtr1*dt*U::length, sidata.vtr2*dt*U::length, sidata.vtr3*dt*U::length}};
+        const double Fn = sidata.Fn*U::force;
+        const int index = (sidata.itype - 1)*nTypes_ + (sidata.jtype - 1);
+
+        colloid::Vec3 Ft;
+        if (isWall_ && diRenzoWall_)
+        {
+            colloid::DiRenzoDiMaioState s;
+            if (!newContact) s.shear = colloid::tangentialPart(stored(hist, LOAD, U::length), en);
+            Ft = diRenzo_[index].force(sidata.radi*U::length, sidata.deltan*U::length, ds, Fn, s);
+            if (updateHistory) store(hist, LOAD, s.shear, U::length);
+        }
+        else
+        {
+            colloid::WaltonBraunTangentialState s;
+            if (!newContact)
+            {
+                s.load = colloid::tangentialPart(stored(hist, LOAD, U::force), en);
+                s.turningLoad = colloid::tangentialPart(stored(hist, TURNING, U::force), en);
+                s.lastIncrement = colloid::tangentialPart(stored(hist, LAST_INCREMENT, U::length), en);
+                s.lastNormalForce = hist[LAST_NORMAL]*U::force;
+            }
+            Ft = waltonBraun_[index].force(ds, Fn, s);
+            if (updateHistory)
+            {
+                store(hist, LOAD, s.load, U::force);
+                store(hist, TURNING, s.turningLoad, U::force);
+                store(hist, LAST_INCREMENT, s.lastIncrement, U::length);
+                hist[LAST_NORMAL] = s.lastNormalForce/U::force;
+            }
+        }
+        if (updateHistory) hist[LAST_STEP] = step;
+        if (sidata.contact_flags) *sidata.contact_flags |= CONTACT_TANGENTIAL_MODEL;
+
+        // force on i [run units] and en x F for the torques
+        const double F[3] = {Ft[0]/U::force, Ft[1]/U::force, Ft[2]/U::force};
+        const double t[3] = {en[1]*F[2] - en[2]*F[1], en[2]*F[0] - en[0]*F[2], en[0]*F[1] - en[1]*F[0]};
+        const double w = sidata.is_wall ? sidata.area_ratio : 1.0;
+        for (int k = 0; k < 3; k++)
+        {
+            i_forces.delta_F[k] += w*F[k];
+            i_forces.delta_torque[k] -= w*sidata.cri*t[k];
+            if (!sidata.is_wall)
+            {
+                j_forces.delta_F[k] -= F[k];
+                j_forces.delta_torque[k] -= sidata.crj*t[k];
+            }
+        }
+    }
+
+    void surfacesClose(SurfacesCloseData & scdata, ForceData &, ForceData &)
+    {
+        if (scdata.contact_flags) *scdata.contact_flags &= ~CONTACT_TANGENTIAL_MODEL;
+        if (!scdata.contact_history) return;
+        for (int k = 0; k < SIZE; k++) scdata.contact_history[offset_ + k] = 0.0;
+    }
+
+    void beginPass(SurfacesIntersectData &, ForceData &, ForceData &) {}
+    void endPass(SurfacesIntersectData &, ForceData &, ForceData &) {}
+
+private:
+    static colloid::Vec3 stored(const double *hist, int at, double toSI)
+    {
+        return {{hist[at]*toSI, hist[at + 1]*toSI, hist[at + 2]*toSI}};
+    }
+
+    static void store(double *hist, int at, const colloid::Vec3 & v, double toSI)
+    {
+        for (int k = 0; k < 3; k++) hist[at + k] = v[k]/toSI;
+    }
+
+    const bool isWall_;
+    bool diRenzoWall_;
+    int nTypes_;
+    int offset_;
+    std::vector<colloid::WaltonBraunTangential> waltonBraun_;  // per type pair
+    std::vector<colloid::DiRenzoDiMaio> diRenzo_;              // per type pair, walls
+};
+
+}
+}
+
+#endif // TANGENTIAL_MODEL_WALTON_BRAUN_H_
+#endif

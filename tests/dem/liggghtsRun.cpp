@@ -1,0 +1,106 @@
+/*---------------------------------------------------------------------------*\
+    colloidFoam DEM tests: see liggghtsRun.H.
+\*---------------------------------------------------------------------------*/
+#include "liggghtsRun.H"
+
+#include "register_colloid_models.h"
+
+#include "atom.h"
+#include "input.h"
+#include "lammps.h"
+#include "library.h"
+#include "update.h"
+
+#include <gtest/gtest.h>
+
+#include <fstream>
+#include <sstream>
+#include <stdexcept>
+
+namespace demTest
+{
+
+LiggghtsRun::LiggghtsRun()
+:
+    lmp_(nullptr)
+{
+    registerColloidModels();
+    // LIGGGHTS writes to its screen unconditionally in places ("-screen
+    // none" crashes mesh reading), so the screen goes to /dev/null and the
+    // log, with any error message, to <test name>.log
+    const ::testing::TestInfo* test =
+        ::testing::UnitTest::GetInstance()->current_test_info();
+    const std::string log = std::string(test ? test->name() : "liggghts") + ".log";
+    const char* args[] =
+        {"liggghts", "-log", log.c_str(), "-echo", "log", "-screen", "/dev/null"};
+    void* handle = nullptr;
+    lammps_open_no_mpi(7, const_cast<char**>(args), &handle);
+    lmp_ = static_cast<LAMMPS_NS::LAMMPS*>(handle);
+}
+
+LiggghtsRun::~LiggghtsRun()
+{
+    lammps_close(lmp_);
+}
+
+void LiggghtsRun::commands(const std::string& lines)
+{
+    std::istringstream in(lines);
+    std::string line;
+    while (std::getline(in, line))
+    {
+        lmp_->input->one(line.c_str());
+    }
+}
+
+int LiggghtsRun::local(int id) const
+{
+    const int i = lmp_->atom->map(id);
+    if (i < 0 || i >= lmp_->atom->nlocal)
+    {
+        throw std::runtime_error("atom " + std::to_string(id) + " is not a local atom");
+    }
+    return i;
+}
+
+const double* LiggghtsRun::x(int id) const { return lmp_->atom->x[local(id)]; }
+const double* LiggghtsRun::v(int id) const { return lmp_->atom->v[local(id)]; }
+const double* LiggghtsRun::f(int id) const { return lmp_->atom->f[local(id)]; }
+const double* LiggghtsRun::omega(int id) const { return lmp_->atom->omega[local(id)]; }
+double LiggghtsRun::mass(int id) const { return lmp_->atom->rmass[local(id)]; }
+double LiggghtsRun::dt() const { return lmp_->update->dt; }
+
+std::string LiggghtsRun::header(double halfBox, const std::string& boundary)
+{
+    const std::string b = std::to_string(halfBox);
+    return
+        "units micro\n"
+        "atom_style granular\n"
+        "atom_modify map array\n"
+        "boundary " + boundary + "\n"
+        "newton off\n"
+        "communicate single vel yes\n"
+        "region box block -" + b + " " + b + " -" + b + " " + b + " -" + b + " " + b + " units box\n"
+        "create_box 2 box\n";
+}
+
+void writeSquareStl(const std::string& file, double halfSide, double zWall)
+{
+    std::ofstream out(file);
+    const double a = halfSide;
+    const double z = zWall;
+    auto facet = [&](double x1, double y1, double x2, double y2, double x3, double y3)
+    {
+        out << "facet normal 0 0 1\nouter loop\n"
+            << "vertex " << x1 << ' ' << y1 << ' ' << z << '\n'
+            << "vertex " << x2 << ' ' << y2 << ' ' << z << '\n'
+            << "vertex " << x3 << ' ' << y3 << ' ' << z << '\n'
+            << "endloop\nendfacet\n";
+    };
+    out << "solid wall\n";
+    facet(-a, -a, a, -a, a, a);
+    facet(-a, -a, a, a, -a, a);
+    out << "endsolid wall\n";
+}
+
+} // namespace demTest
