@@ -1,0 +1,146 @@
+#include "couplingProperties.H"
+#include "Time.H"
+#include "OSspecific.H"
+
+const Foam::dictionary& Foam::couplingProperties::requiredSubDict
+(
+    const dictionary& dict,
+    const word& key
+)
+{
+    if (!dict.isDict(key))
+    {
+        FatalIOErrorInFunction(dict)
+            << "Missing sub-dictionary '" << key << "' in " << dict.name()
+            << exit(FatalIOError);
+    }
+    return dict.subDict(key);
+}
+
+
+Foam::scalar Foam::couplingProperties::positiveScalar
+(
+    const dictionary& dict,
+    const word& key
+)
+{
+    if (!dict.found(key))
+    {
+        FatalIOErrorInFunction(dict)
+            << "Missing keyword '" << key << "' in " << dict.name()
+            << " (allowed range: > 0)"
+            << exit(FatalIOError);
+    }
+
+    const scalar value = dict.get<scalar>(key);
+
+    if (!(value > 0))
+    {
+        FatalIOErrorInFunction(dict)
+            << "Keyword '" << key << "' in " << dict.name() << " is "
+            << value << "; allowed range: > 0"
+            << exit(FatalIOError);
+    }
+    return value;
+}
+
+
+Foam::couplingProperties::couplingProperties(const objectRegistry& obr)
+:
+    IOdictionary
+    (
+        IOobject
+        (
+            "couplingProperties",
+            obr.time().constant(),
+            obr,
+            IOobject::MUST_READ_IF_MODIFIED,
+            IOobject::NO_WRITE
+        )
+    ),
+    rhoFluid_(0),
+    muFluid_(0),
+    particleDiameter_(0),
+    particleDensity_(0),
+    demTimeStep_(0),
+    couplingInterval_(0),
+    demScreen_(false)
+{
+    const dictionary& dict = *this;
+
+    if (!dict.found("couplingMode"))
+    {
+        FatalIOErrorInFunction(dict)
+            << "Missing keyword 'couplingMode' in " << dict.name()
+            << " (allowed: oneWay)" << exit(FatalIOError);
+    }
+    const word mode(dict.get<word>("couplingMode"));
+    if (mode != "oneWay")
+    {
+        FatalIOErrorInFunction(dict)
+            << "Keyword 'couplingMode' in " << dict.name() << " is '"
+            << mode << "'; allowed: oneWay" << exit(FatalIOError);
+    }
+
+    // Fluid: mu directly, or nu times rho
+    const dictionary& fluid = requiredSubDict(dict, "fluid");
+    rhoFluid_ = positiveScalar(fluid, "rho");
+    if (fluid.found("mu") && fluid.found("nu"))
+    {
+        FatalIOErrorInFunction(fluid)
+            << "Give either 'mu' or 'nu' in " << fluid.name() << ", not both"
+            << exit(FatalIOError);
+    }
+    if (fluid.found("nu"))
+    {
+        muFluid_ = rhoFluid_*positiveScalar(fluid, "nu");
+    }
+    else
+    {
+        muFluid_ = positiveScalar(fluid, "mu");
+    }
+
+    const dictionary& particles = requiredSubDict(dict, "particles");
+    particleDiameter_ = positiveScalar(particles, "diameter");
+    particleDensity_ = positiveScalar(particles, "density");
+
+    const dictionary& dem = requiredSubDict(dict, "DEM");
+    if (!dem.found("script"))
+    {
+        FatalIOErrorInFunction(dem)
+            << "Missing keyword 'script' in " << dem.name()
+            << " (a LIGGGHTS input file, relative to the case)"
+            << exit(FatalIOError);
+    }
+    demScript_ = dem.get<fileName>("script");
+    demScript_.expand();
+    if (!demScript_.isAbsolute())
+    {
+        demScript_ = obr.time().globalPath()/demScript_;
+    }
+    if (!isFile(demScript_))
+    {
+        FatalIOErrorInFunction(dem)
+            << "Keyword 'script' in " << dem.name() << ": file "
+            << demScript_ << " does not exist" << exit(FatalIOError);
+    }
+
+    demTimeStep_ = positiveScalar(dem, "timeStep");
+
+    if (!dem.found("couplingInterval"))
+    {
+        FatalIOErrorInFunction(dem)
+            << "Missing keyword 'couplingInterval' in " << dem.name()
+            << " (allowed range: integer >= 1)" << exit(FatalIOError);
+    }
+    couplingInterval_ = dem.get<label>("couplingInterval");
+    if (couplingInterval_ < 1)
+    {
+        FatalIOErrorInFunction(dem)
+            << "Keyword 'couplingInterval' in " << dem.name() << " is "
+            << couplingInterval_ << "; allowed range: integer >= 1"
+            << exit(FatalIOError);
+    }
+
+    demScreen_ = dem.getOrDefault<bool>("screen", false);
+}

@@ -1,0 +1,311 @@
+/*---------------------------------------------------------------------------*\
+    The only translation unit of the project's OpenFOAM side that sees
+    LIGGGHTS' headers.  They are included as <liggghts/...> with no
+    -I/usr/include/liggghts, because that folder holds error.h and memory.h,
+    which would shadow the C library's headers of the same names.
+\*---------------------------------------------------------------------------*/
+
+#include "liggghtsEngine.H"
+
+#include <mpi.h>
+#include <liggghts/lammps.h>
+#include <liggghts/input.h>
+#include <liggghts/atom.h>
+#include <liggghts/update.h>
+#include <liggghts/modify.h>
+#include <liggghts/force.h>
+#include <liggghts/domain.h>
+#include <liggghts/fix.h>
+#include <liggghts/compute.h>
+
+#include <cstdio>
+#include <cstdlib>
+#include <cstring>
+#include <deque>
+#include <fstream>
+#include <stdexcept>
+#include <vector>
+
+namespace
+{
+
+// LIGGGHTS ends the process itself on a bad command (exit(1) after
+// writing the error to its log).  With its screen output off, the user
+// would see a silent stop: at exit during a LIGGGHTS call, show the end of
+// its log on stderr.
+std::string logFileName;
+bool insideLiggghts = false;
+int worldRank = 0;      // only rank 0 writes the log and reports
+
+void reportLiggghtsExit()
+{
+    if (!insideLiggghts || worldRank != 0) return;
+
+    std::ifstream log(logFileName);
+    std::deque<std::string> tail;
+    for (std::string line; std::getline(log, line); )
+    {
+        tail.push_back(line);
+        if (tail.size() > 5) tail.pop_front();
+    }
+    std::fprintf(stderr, "\n--> LIGGGHTS stopped the run; end of %s:\n",
+        logFileName.c_str());
+    for (const std::string& line : tail)
+    {
+        std::fprintf(stderr, "    %s\n", line.c_str());
+    }
+}
+
+
+// Scope of a call into LIGGGHTS, for reportLiggghtsExit.
+// OpenFOAM's floating-point traps (FOAM_SIGFPE) stay on inside LIGGGHTS:
+// the coupled runs tried so far raise none, and a trap is louder than the
+// NaN LIGGGHTS would otherwise carry on with (e.g. a particle centred
+// exactly on a mesh wall: 0/0 in the wall contact normal).
+struct liggghtsCall
+{
+    liggghtsCall() { insideLiggghts = true; }
+    ~liggghtsCall() { insideLiggghts = false; }
+};
+
+
+LAMMPS_NS::LAMMPS* engine(void* p)
+{
+    return static_cast<LAMMPS_NS::LAMMPS*>(p);
+}
+
+
+LAMMPS_NS::Fix* findFix(void* p, const std::string& id)
+{
+    LAMMPS_NS::Modify* modify = engine(p)->modify;
+    const int i = modify->find_fix(id.c_str());
+    if (i < 0)
+    {
+        throw std::runtime_error("LIGGGHTS has no fix with id '" + id + "'");
+    }
+    return modify->fix[i];
+}
+
+} // End anonymous namespace
+
+
+Foam::liggghtsEngine::liggghtsEngine
+(
+    const std::string& logFile,
+    const std::string& screenFile
+)
+:
+    lmp_(nullptr),
+    ownsMPI_(false),
+    nRuns_(0)
+{
+    int started = 0;
+    MPI_Initialized(&started);
+    if (!started)
+    {
+        int argc = 0;
+        char** argv = nullptr;
+        MPI_Init(&argc, &argv);
+        ownsMPI_ = true;
+    }
+
+    // LAMMPS takes a mutable argv
+    std::vector<std::string> args{"liggghts", "-log", logFile};
+    if (!screenFile.empty())
+    {
+        // Not "none": some LIGGGHTS commands (mesh file input) print to
+        // the screen without checking that it exists
+        args.push_back("-screen");
+        args.push_back(screenFile);
+    }
+    std::vector<char*> argv;
+    for (std::string& a : args)
+    {
+        argv.push_back(&a[0]);
+    }
+
+    logFileName = logFile;
+    MPI_Comm_rank(MPI_COMM_WORLD, &worldRank);
+    std::atexit(reportLiggghtsExit);
+
+    liggghtsCall call;
+    lmp_ = new LAMMPS_NS::LAMMPS
+    (
+        static_cast<int>(argv.size()), argv.data(), MPI_COMM_WORLD
+    );
+
+    // An error on one rank ends with MPI_Abort, which flushes nothing
+    for (FILE* f : {engine(lmp_)->screen, engine(lmp_)->logfile})
+    {
+        if (f)
+        {
+            std::setvbuf(f, nullptr, _IOLBF, BUFSIZ);
+        }
+    }
+}
+
+
+Foam::liggghtsEngine::~liggghtsEngine()
+{
+    delete engine(lmp_);
+    if (ownsMPI_)
+    {
+        int finished = 0;
+        MPI_Finalized(&finished);
+        if (!finished)
+        {
+            MPI_Finalize();
+        }
+    }
+}
+
+
+void Foam::liggghtsEngine::command(const std::string& line)
+{
+    liggghtsCall call;
+    engine(lmp_)->input->one(line.c_str());
+}
+
+
+void Foam::liggghtsEngine::file(const std::string& fileName)
+{
+    liggghtsCall call;
+    engine(lmp_)->input->file(fileName.c_str());
+}
+
+
+void Foam::liggghtsEngine::run(long nSteps)
+{
+    std::string line = "run " + std::to_string(nSteps);
+    if (nRuns_ > 0)
+    {
+        line += " pre no post no";
+    }
+    command(line);
+    ++nRuns_;
+}
+
+
+std::string Foam::liggghtsEngine::unitStyle() const
+{
+    const char* u = engine(lmp_)->update->unit_style;
+    return u ? std::string(u) : std::string();
+}
+
+
+double Foam::liggghtsEngine::timeStep() const
+{
+    return engine(lmp_)->update->dt;
+}
+
+
+int Foam::liggghtsEngine::nFixesOfStyle(const std::string& style) const
+{
+    return engine(lmp_)->modify->n_fixes_style_strict(style.c_str());
+}
+
+
+bool Foam::liggghtsEngine::hasPairStyle() const
+{
+    return engine(lmp_)->force->pair != nullptr;
+}
+
+
+void Foam::liggghtsEngine::box
+(
+    double lo[3],
+    double hi[3],
+    bool periodic[3]
+) const
+{
+    const LAMMPS_NS::Domain* domain = engine(lmp_)->domain;
+    for (int k = 0; k < 3; ++k)
+    {
+        lo[k] = domain->boxlo[k];
+        hi[k] = domain->boxhi[k];
+        periodic[k] = domain->periodicity[k] != 0;
+    }
+}
+
+
+int Foam::liggghtsEngine::nLocal() const
+{
+    return engine(lmp_)->atom->nlocal;
+}
+
+
+long Foam::liggghtsEngine::nGlobal() const
+{
+    return static_cast<long>(engine(lmp_)->atom->natoms);
+}
+
+
+double** Foam::liggghtsEngine::x() const
+{
+    return engine(lmp_)->atom->x;
+}
+
+
+double** Foam::liggghtsEngine::v() const
+{
+    return engine(lmp_)->atom->v;
+}
+
+
+double* Foam::liggghtsEngine::radius() const
+{
+    return engine(lmp_)->atom->radius;
+}
+
+
+double* Foam::liggghtsEngine::rmass() const
+{
+    return engine(lmp_)->atom->rmass;
+}
+
+
+double* Foam::liggghtsEngine::scalarProperty(const std::string& fixId) const
+{
+    LAMMPS_NS::Fix* f = findFix(lmp_, fixId);
+    if (std::strcmp(f->style, "property/atom") != 0 || !f->vector_atom)
+    {
+        if (nLocal() == 0) return nullptr;
+        throw std::runtime_error
+        (
+            "LIGGGHTS fix '" + fixId + "' is not a scalar property/atom"
+        );
+    }
+    return f->vector_atom;
+}
+
+
+double** Foam::liggghtsEngine::vectorProperty(const std::string& fixId) const
+{
+    LAMMPS_NS::Fix* f = findFix(lmp_, fixId);
+    if (std::strcmp(f->style, "property/atom") != 0 || !f->array_atom)
+    {
+        if (nLocal() == 0) return nullptr;
+        throw std::runtime_error
+        (
+            "LIGGGHTS fix '" + fixId + "' is not a vector property/atom"
+        );
+    }
+    return f->array_atom;
+}
+
+
+double* Foam::liggghtsEngine::computePerAtom(const std::string& computeId) const
+{
+    LAMMPS_NS::Compute* c =
+        engine(lmp_)->modify->find_compute_id(computeId.c_str());
+    if (!c || !c->peratom_flag)
+    {
+        throw std::runtime_error
+        (
+            "LIGGGHTS has no per-atom compute with id '" + computeId + "'"
+        );
+    }
+    liggghtsCall call;
+    c->compute_peratom();
+    return c->vector_atom;
+}

@@ -1,0 +1,250 @@
+#include "particleExchange.H"
+#include "PstreamBuffers.H"
+#include "Random.H"
+
+Foam::particleExchange::particleExchange
+(
+    const volVectorField& U,
+    const particleLocator& locator
+)
+:
+    mesh_(U.mesh()),
+    locator_(locator),
+    UInterp_(U),
+    procBb_(Pstream::nProcs())
+{
+    // Slightly enlarged so that points on the mesh boundary are inside
+    treeBoundBox bb(mesh_.points());
+    Random rndGen(4711);
+    bb = bb.extend(rndGen, 1e-6);
+    procBb_[Pstream::myProcNo()] = bb;
+    Pstream::gatherList(procBb_);
+    Pstream::scatterList(procBb_);
+}
+
+
+void Foam::particleExchange::answer
+(
+    const List<point>& p,
+    const labelList& hint,
+    const scalarList& maxWallDist,
+    List<vector>& U,
+    labelList& cell,
+    scalarList& wallDist
+) const
+{
+    U.setSize(p.size());
+    cell.setSize(p.size());
+    wallDist.setSize(p.size());
+
+    forAll(p, i)
+    {
+        cell[i] = locator_.findCell(p[i], hint[i]);
+        U[i] = (cell[i] >= 0) ? UInterp_.interpolate(p[i], cell[i]) : Zero;
+        wallDist[i] =
+            (cell[i] >= 0 && maxWallDist[i] > 0)
+          ? locator_.wallDistance(p[i], maxWallDist[i])
+          : GREAT;
+    }
+}
+
+
+void Foam::particleExchange::exchange
+(
+    const List<List<point>>& p,
+    const List<labelList>& hint,
+    const List<scalarList>& maxWallDist,
+    List<List<vector>>& U,
+    List<labelList>& cell,
+    List<scalarList>& wallDist
+) const
+{
+    const label nProcs = Pstream::nProcs();
+    U.setSize(nProcs);
+    cell.setSize(nProcs);
+    wallDist.setSize(nProcs);
+
+    if (!Pstream::parRun())
+    {
+        answer(p[0], hint[0], maxWallDist[0], U[0], cell[0], wallDist[0]);
+        return;
+    }
+
+    // Queries out: only to ranks that have some
+    PstreamBuffers queries(Pstream::commsTypes::nonBlocking);
+    for (label proci = 0; proci < nProcs; ++proci)
+    {
+        if (p[proci].size())
+        {
+            UOPstream os(proci, queries);
+            os << p[proci] << hint[proci] << maxWallDist[proci];
+        }
+    }
+    labelList querySizes;
+    queries.finishedSends(querySizes);
+
+    // Answers back to the ranks that asked
+    PstreamBuffers answers(Pstream::commsTypes::nonBlocking);
+    for (label proci = 0; proci < nProcs; ++proci)
+    {
+        if (querySizes[proci])
+        {
+            UIPstream is(proci, queries);
+            List<point> qp(is);
+            labelList qHint(is);
+            scalarList qMax(is);
+
+            List<vector> aU;
+            labelList aCell;
+            scalarList aWall;
+            answer(qp, qHint, qMax, aU, aCell, aWall);
+
+            UOPstream os(proci, answers);
+            os << aU << aCell << aWall;
+        }
+    }
+    labelList answerSizes;
+    answers.finishedSends(answerSizes);
+
+    for (label proci = 0; proci < nProcs; ++proci)
+    {
+        if (answerSizes[proci])
+        {
+            UIPstream is(proci, answers);
+            is >> U[proci] >> cell[proci] >> wallDist[proci];
+        }
+    }
+}
+
+
+void Foam::particleExchange::locate
+(
+    const List<point>& p,
+    const labelList& prevProc,
+    const labelList& prevCell,
+    const scalarList& maxWallDist,
+    List<vector>& U,
+    labelList& proc,
+    labelList& cell,
+    scalarList& wallDist
+) const
+{
+    const label nProcs = Pstream::nProcs();
+    const label n = p.size();
+
+    U = Zero;
+    U.setSize(n, Zero);
+    proc.setSize(n, -1);
+    proc = -1;
+    cell.setSize(n, -1);
+    cell = -1;
+    wallDist.setSize(n, GREAT);
+    wallDist = GREAT;
+
+    // Rank tried in the first round, per particle
+    labelList tried(n, -1);
+
+    // Round 1: previous owner with its cell as hint, else first candidate
+    // box.  Round 2: the remaining candidate boxes, global search.
+    for (label round = 0; round < 2; ++round)
+    {
+        List<DynamicList<point>> qp(nProcs);
+        List<DynamicList<label>> qHint(nProcs);
+        List<DynamicList<scalar>> qMax(nProcs);
+        List<DynamicList<label>> qIndex(nProcs);
+
+        for (label i = 0; i < n; ++i)
+        {
+            if (round == 0)
+            {
+                label target = -1;
+                label hint = -1;
+                if (prevProc[i] >= 0 && prevProc[i] < nProcs)
+                {
+                    target = prevProc[i];
+                    hint = prevCell[i];
+                }
+                else if (procBb_[Pstream::myProcNo()].contains(p[i]))
+                {
+                    target = Pstream::myProcNo();
+                }
+                else
+                {
+                    forAll(procBb_, proci)
+                    {
+                        if (procBb_[proci].contains(p[i]))
+                        {
+                            target = proci;
+                            break;
+                        }
+                    }
+                }
+                if (target >= 0)
+                {
+                    tried[i] = target;
+                    qp[target].append(p[i]);
+                    qHint[target].append(hint);
+                    qMax[target].append(maxWallDist[i]);
+                    qIndex[target].append(i);
+                }
+            }
+            else if (cell[i] < 0)
+            {
+                forAll(procBb_, proci)
+                {
+                    if (proci != tried[i] && procBb_[proci].contains(p[i]))
+                    {
+                        qp[proci].append(p[i]);
+                        qHint[proci].append(-1);
+                        qMax[proci].append(maxWallDist[i]);
+                        qIndex[proci].append(i);
+                    }
+                }
+            }
+        }
+
+        // A collective call: every rank takes part in every round
+        List<List<point>> sendP(nProcs);
+        List<labelList> sendHint(nProcs);
+        List<scalarList> sendMax(nProcs);
+        for (label proci = 0; proci < nProcs; ++proci)
+        {
+            sendP[proci].transfer(qp[proci]);
+            sendHint[proci].transfer(qHint[proci]);
+            sendMax[proci].transfer(qMax[proci]);
+        }
+
+        List<List<vector>> aU;
+        List<labelList> aCell;
+        List<scalarList> aWall;
+        exchange(sendP, sendHint, sendMax, aU, aCell, aWall);
+
+        // Lowest rank wins where a point on a processor face is found twice
+        for (label proci = 0; proci < nProcs; ++proci)
+        {
+            const labelList& idx = qIndex[proci];
+            forAll(idx, k)
+            {
+                const label i = idx[k];
+                if (aCell[proci][k] >= 0 && cell[i] < 0)
+                {
+                    U[i] = aU[proci][k];
+                    proc[i] = proci;
+                    cell[i] = aCell[proci][k];
+                    wallDist[i] = aWall[proci][k];
+                }
+            }
+        }
+
+        // One rank: a second round could only repeat the global search.
+        // Several: skip it when every particle was found where expected.
+        if
+        (
+            !Pstream::parRun()
+         || !returnReduce(cell.found(-1), orOp<bool>())
+        )
+        {
+            break;
+        }
+    }
+}

@@ -1,0 +1,149 @@
+#include "particleLocator.H"
+#include "wallPolyPatch.H"
+#include "Random.H"
+#include "DynamicList.H"
+
+Foam::particleLocator::particleLocator(const polyMesh& mesh)
+:
+    mesh_(mesh),
+    search_(mesh, polyMesh::CELL_TETS),
+    wallTree_(),
+    nGlobalSearches_(0)
+{
+    DynamicList<label> wallFaces;
+    for (const polyPatch& pp : mesh.boundaryMesh())
+    {
+        if (isA<wallPolyPatch>(pp))
+        {
+            forAll(pp, i)
+            {
+                wallFaces.append(pp.start() + i);
+            }
+        }
+    }
+
+    if (wallFaces.size())
+    {
+        // Search domain slightly larger than the mesh, and never flat
+        Random rndGen(12345);
+        treeBoundBox bb(mesh.points());
+        bb = bb.extend(rndGen, 1e-4);
+        bb.min() -= point::uniform(ROOTVSMALL);
+        bb.max() += point::uniform(ROOTVSMALL);
+
+        wallTree_.reset
+        (
+            new indexedOctree<treeDataFace>
+            (
+                treeDataFace(false, mesh, labelList(wallFaces)),
+                bb,
+                8,      // max tree depth
+                10,     // faces per leaf
+                3.0     // duplicity
+            )
+        );
+    }
+}
+
+
+Foam::label Foam::particleLocator::walk(const point& p, label celli) const
+{
+    const cellList& cells = mesh_.cells();
+    const labelList& own = mesh_.faceOwner();
+    const labelList& nei = mesh_.faceNeighbour();
+    const vectorField& Sf = mesh_.faceAreas();
+    const vectorField& Cf = mesh_.faceCentres();
+
+    for (label step = 0; step < maxWalkSteps_; ++step)
+    {
+        // Face whose plane p lies furthest outside of
+        label exitFace = -1;
+        scalar exitDist = 0;
+        for (const label facei : cells[celli])
+        {
+            const scalar sign = (own[facei] == celli) ? 1 : -1;
+            const scalar d = sign*((p - Cf[facei]) & Sf[facei])/mag(Sf[facei]);
+            if (d > exitDist)
+            {
+                exitDist = d;
+                exitFace = facei;
+            }
+        }
+
+        if (exitFace < 0)
+        {
+            // Inside every face plane: confirm with the tet decomposition
+            if (mesh_.pointInCell(p, celli, polyMesh::CELL_TETS))
+            {
+                return celli;
+            }
+            for (const label facei : cells[celli])
+            {
+                if (mesh_.isInternalFace(facei))
+                {
+                    const label other =
+                        (own[facei] == celli) ? nei[facei] : own[facei];
+                    if (mesh_.pointInCell(p, other, polyMesh::CELL_TETS))
+                    {
+                        return other;
+                    }
+                }
+            }
+            return -1;
+        }
+
+        if (!mesh_.isInternalFace(exitFace))
+        {
+            return -1;
+        }
+
+        celli = (own[exitFace] == celli) ? nei[exitFace] : own[exitFace];
+    }
+
+    return -1;
+}
+
+
+Foam::label Foam::particleLocator::findCell
+(
+    const point& p,
+    const label previousCell
+) const
+{
+    if (previousCell >= 0 && previousCell < mesh_.nCells())
+    {
+        const label celli = walk(p, previousCell);
+        if (celli >= 0)
+        {
+            return celli;
+        }
+    }
+
+    ++nGlobalSearches_;
+    return search_.findCell(p, -1, true);
+}
+
+
+Foam::scalar Foam::particleLocator::wallDistance
+(
+    const point& p,
+    const scalar maxDist
+) const
+{
+    if (!wallTree_.valid())
+    {
+        return GREAT;
+    }
+
+    const pointIndexHit hit = wallTree_->findNearest(p, sqr(maxDist));
+
+    return hit.hit() ? mag(hit.hitPoint() - p) : GREAT;
+}
+
+
+Foam::label Foam::particleLocator::nGlobalSearches() const
+{
+    const label n = nGlobalSearches_;
+    nGlobalSearches_ = 0;
+    return n;
+}

@@ -1,0 +1,81 @@
+#!/bin/bash
+# Bad input must stop colloidDEMFoam before anything is written, with a
+# non-zero exit and a message naming the file and the keyword.
+#
+# usage: runBadInputTest.sh variant workDir
+#   variants: missingKeyword negativeDiameter negativeDensity
+#             unknownDragModel inconsistentDeltaT demStepTooLong
+#             gravityInScript demScriptError
+set -e
+export PYTHONDONTWRITEBYTECODE=1   # no __pycache__ in the source tree
+variant=$1
+work=$2
+here=$(cd "$(dirname "$0")" && pwd)
+set +u
+source "$here/../../../etc/bashrc"
+set -u
+
+rm -rf "$work"
+mkdir -p "$(dirname "$work")"
+cp -r "$here/case" "$work"
+cd "$work"
+blockMesh > log.blockMesh 2>&1
+mkdir -p 0
+postProcess -func writeCellCentres -time 0 > log.writeCellCentres 2>&1
+python3 "$here/setPoiseuilleU.py" . 1e-4 1e-3
+
+props=constant/couplingProperties
+case $variant in
+    missingKeyword)
+        foamDictionary $props -entry fluid/mu -remove > /dev/null
+        expect="Missing keyword 'mu' in .*couplingProperties" ;;
+    negativeDiameter)
+        foamDictionary $props -entry particles/diameter -set -1e-6 > /dev/null
+        expect="Keyword 'diameter' in .*couplingProperties.* is -1e-06; allowed range: > 0" ;;
+    negativeDensity)
+        foamDictionary $props -entry fluid/rho -set -1000 > /dev/null
+        expect="Keyword 'rho' in .*couplingProperties.* is -1000; allowed range: > 0" ;;
+    unknownDragModel)
+        foamDictionary $props -entry dragModel -set noSuchDrag > /dev/null
+        expect="Unknown dragModel 'noSuchDrag' \(keyword 'dragModel' in .*couplingProperties\"?\)" ;;
+    inconsistentDeltaT)
+        foamDictionary system/controlDict -entry deltaT -set 3e-08 > /dev/null
+        expect="Keyword 'deltaT' in .*controlDict\"? is 3e-08 s but must equal" ;;
+    demStepTooLong)
+        # relaxation time 1.39e-7 s; 2e-7 s x 10 with deltaT to match
+        foamDictionary $props -entry DEM/timeStep -set 2e-07 > /dev/null
+        foamDictionary system/controlDict -entry deltaT -set 2e-06 > /dev/null
+        expect="Keyword 'timeStep' in .*couplingProperties.DEM\"? is 2e-07 s, longer than the particle relaxation time" ;;
+    gravityInScript)
+        echo "fix gravity all gravity 9.81e-6 vector 0 -1 0" >> constant/DEM/in.liggghts
+        expect="defines a 'fix gravity'" ;;
+    demScriptError)
+        # LIGGGHTS exits by itself; its error must reach the solver's output
+        echo "fix oops all noSuchFixStyle" >> constant/DEM/in.liggghts
+        expect="ERROR: Invalid fix style: \"noSuchFixStyle\"" ;;
+    *)  echo "unknown variant $variant"; exit 2 ;;
+esac
+
+before=$(ls | grep -v '^log\.')
+set +e
+colloidDEMFoam > log.colloidDEMFoam 2>&1
+rc=$?
+set -e
+
+status=0
+if [ $rc -eq 0 ]
+then
+    echo "FAIL: exit status 0 for bad input ($variant)"; status=1
+fi
+if ! grep -E -q "$expect" log.colloidDEMFoam
+then
+    echo "FAIL: no message matching: $expect"; status=1
+fi
+if [ "$(ls | grep -v '^log\.')" != "$before" ]
+then
+    echo "FAIL: files written: $(ls)"; status=1
+fi
+grep -E -m1 "$expect" log.colloidDEMFoam || true
+echo "exit status $rc"
+[ $status -eq 0 ] && echo PASS
+exit $status
