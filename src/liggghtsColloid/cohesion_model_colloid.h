@@ -73,6 +73,7 @@ public:
     : CohesionModelBase(lmp, hsetup, cmb),
       name_(name),
       isWall_(cmb->is_wall()),
+      wall_(isWall_ ? dynamic_cast<FixWallGran*>(hsetup) : NULL),
       groundedWall_(false),
       timeStepCheck_(true),
       vdwInnerCutoff_(0.0),
@@ -175,22 +176,20 @@ private:
 
     // A primitive wall lists the particles within half the neighbour skin
     // of it (mesh walls use the contact distance factor), so a skin
-    // shorter than twice the range would silently drop forces.
+    // shorter than twice the range would silently drop forces.  Checked
+    // for the wall this model belongs to: walls without colloid forces
+    // (e.g. frictionless side planes) need no such skin.
     void checkPrimitiveWallReach()
     {
         const double range = rangeSI_/U::length;
-        for (int k = 0; k < modify->n_fixes_style("wall/gran"); k++)
-        {
-            FixWallGran *wall = static_cast<FixWallGran*>(modify->find_fix_style("wall/gran", k));
-            if (wall->is_mesh_wall() || 0.5*neighbor->skin >= range) continue;
-            char msg[512];
-            std::snprintf(msg, sizeof(msg),
-                "%s: primitive wall '%s' sees particles only within half the "
-                "neighbour skin (%g um) of it, less than the range of the "
-                "colloid forces (%g um); use 'neighbor %g bin' or larger, or a "
-                "mesh wall", name_, wall->id, 0.5*neighbor->skin, range, 2*range);
-            error->all(FLERR, msg);
-        }
+        if (!wall_ || wall_->is_mesh_wall() || 0.5*neighbor->skin >= range) return;
+        char msg[512];
+        std::snprintf(msg, sizeof(msg),
+            "%s: primitive wall '%s' sees particles only within half the "
+            "neighbour skin (%g um) of it, less than the range of the "
+            "colloid forces (%g um); use 'neighbor %g bin' or larger, or a "
+            "mesh wall", name_, wall_->id, 0.5*neighbor->skin, range, 2*range);
+        error->all(FLERR, msg);
     }
 
     // Limits for two of the lightest particles, printed by the pair style:
@@ -343,6 +342,7 @@ private:
 
     const char *name_;
     const bool isWall_;
+    FixWallGran *const wall_;   // the wall fix of a wall model, else NULL
     bool groundedWall_;
     bool timeStepCheck_;
     double vdwInnerCutoff_;                    // [m]

@@ -49,7 +49,12 @@ void Foam::demCoupling::checkTimeStep() const
     const scalar d = props_.particleDiameter();
     const scalar mass =
         props_.particleDensity()*constant::mathematical::pi*pow3(d)/6;
-    checkRelaxationTime(mass/drag_->K(d, 0));
+    const scalar tau = mass/drag_->K(d, 0);
+    Info<< "Time-step limit, Stokes relaxation time m/K of the particles: "
+        << tau << " s; DEM timeStep " << props_.demTimeStep() << " s is "
+        << props_.demTimeStep()/tau << " of it (the DEM prints its own"
+        << " limits in log.liggghts)" << endl;
+    checkRelaxationTime(tau);
 
     if (runTime.controlDict().getOrDefault<bool>("adjustTimeStep", false))
     {
@@ -498,9 +503,24 @@ void Foam::demCoupling::write()
             );
         }
 
+        // Removed: counted by the DEM's outflow fixes (massflow/mesh with
+        // delete_atoms yes), independently of the two other counts
+        const label nRemoved =
+            label(std::lround(dem.sumFixVector("massflow/mesh", 5)));
+
         Info<< "Particles: present " << nPresent
             << ", inserted " << nInserted_
-            << ", removed " << nInserted_ - nPresent << endl;
+            << ", removed " << nRemoved << endl;
+
+        if (nPresent != nInserted_ - nRemoved)
+        {
+            WarningInFunction
+                << "present " << nPresent << " != inserted " << nInserted_
+                << " - removed " << nRemoved << ": particles were lost"
+                << " other than through a massflow/mesh outflow"
+                << " (e.g. 'thermo_modify lost ignore' in the DEM script)"
+                << endl;
+        }
 
         if (demSeconds_ > 0)
         {

@@ -97,7 +97,7 @@ Foam::liggghtsEngine::liggghtsEngine
 :
     lmp_(nullptr),
     ownsMPI_(false),
-    nRuns_(0)
+    setUpWithParticles_(false)
 {
     int started = 0;
     MPI_Initialized(&started);
@@ -177,12 +177,13 @@ void Foam::liggghtsEngine::file(const std::string& fileName)
 void Foam::liggghtsEngine::run(long nSteps)
 {
     std::string line = "run " + std::to_string(nSteps);
-    if (nRuns_ > 0)
+    if (setUpWithParticles_)
     {
         line += " pre no post no";
     }
+    const bool withParticles = nGlobal() > 0;
     command(line);
-    ++nRuns_;
+    setUpWithParticles_ = setUpWithParticles_ || withParticles;
 }
 
 
@@ -202,6 +203,34 @@ double Foam::liggghtsEngine::timeStep() const
 int Foam::liggghtsEngine::nFixesOfStyle(const std::string& style) const
 {
     return engine(lmp_)->modify->n_fixes_style_strict(style.c_str());
+}
+
+
+double Foam::liggghtsEngine::sumFixVector
+(
+    const std::string& style,
+    const int index
+) const
+{
+    LAMMPS_NS::Modify* modify = engine(lmp_)->modify;
+    const int n = modify->n_fixes_style_strict(style.c_str());
+
+    double sum = 0;
+    for (int rank = 0; rank < n; ++rank)
+    {
+        LAMMPS_NS::Fix* fix =
+            modify->find_fix_style_strict(style.c_str(), rank);
+        if (!fix->vector_flag || index >= fix->size_vector)
+        {
+            throw std::runtime_error
+            (
+                "fix " + std::string(fix->id) + " (" + style
+              + ") has no global vector element " + std::to_string(index)
+            );
+        }
+        sum += fix->compute_vector(index);
+    }
+    return sum;
 }
 
 
