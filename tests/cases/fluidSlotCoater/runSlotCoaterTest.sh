@@ -21,8 +21,12 @@ source "$here/../../../etc/bashrc" || exit 1
 
 rm -rf "$work"
 mkdir -p "$work"
-cp -r "$tutorial/0" "$tutorial/constant" "$tutorial/system" "$work"
+cp -r "$tutorial/constant" "$tutorial/system" "$work"
+cp -r "$tutorial/0.orig" "$work/0"
 cd "$work"
+# The tutorial's steady-flow step (its Allrun runs it in a case folder of
+# its own with this controlDict)
+cp system/controlDict.steadyFlow system/controlDict
 
 run()
 {

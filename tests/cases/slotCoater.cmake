@@ -1,0 +1,29 @@
+# The slot-coater tutorial end to end (tutorials/slotCoater/Allrun: mesh,
+# steady flow, DEM surfaces, coupled particle run with Walton-Braun contact
+# and van der Waals, double layer and lubrication) at test size.
+#
+# slotCoater.serial / .parallel: present = inserted - removed at every
+#   write, with particles both inserted and removed, and each particle file
+#   holding the particles present (checkBookkeeping.py).
+# slotCoater.serialVsParallel: the two runs insert the same particles and
+#   agree on the particles present and their mean velocity within 1 %.
+
+set(slotCoaterDir ${CMAKE_CURRENT_SOURCE_DIR}/slotCoater)
+set(slotCoaterWork ${CMAKE_CURRENT_BINARY_DIR}/slotCoater)
+
+foreach(mode serial parallel)
+    add_test(NAME case.slotCoater.${mode}
+        COMMAND ${slotCoaterDir}/runSlotCoaterRun.sh ${mode} ${slotCoaterWork}/${mode})
+    set_tests_properties(case.slotCoater.${mode} PROPERTIES
+        TIMEOUT 300 LABELS "case;slotCoater"
+        ENVIRONMENT PYTHONDONTWRITEBYTECODE=1
+        FIXTURES_SETUP slotCoater_${mode})
+endforeach()
+set_tests_properties(case.slotCoater.parallel PROPERTIES PROCESSORS 2)
+
+add_test(NAME case.slotCoater.serialVsParallel
+    COMMAND python3 ${slotCoaterDir}/compareBookkeeping.py
+            ${slotCoaterWork}/serial ${slotCoaterWork}/parallel)
+set_tests_properties(case.slotCoater.serialVsParallel PROPERTIES
+    TIMEOUT 30 LABELS "case;slotCoater"
+    FIXTURES_REQUIRED "slotCoater_serial;slotCoater_parallel")
