@@ -42,7 +42,10 @@ COHESION_MODEL(COHESION_COLLOID_VDW_DL_LUB,colloid/vdw/dl/lub,23)
 #include <cmath>
 #include <stdexcept>
 #include <vector>
+#include <cstdio>
+#include <mpi.h>
 #include "atom.h"
+#include "comm.h"
 #include "contact_models.h"
 #include "cohesion_model_base.h"
 #include "fix_wall_gran.h"
@@ -52,6 +55,7 @@ COHESION_MODEL(COHESION_COLLOID_VDW_DL_LUB,colloid/vdw/dl/lub,23)
 #include "colloid_properties.h"
 #include "colloid_time_step.h"
 #include "colloid_units.h"
+#include "colloid_wall_types.h"
 #include "doubleLayer.H"
 #include "lubrication.H"
 #include "timeStepLimits.H"
@@ -112,6 +116,7 @@ public:
             error->all(FLERR, msg);
         }
         neighbor->register_contact_dist_factor(1.0 + rangeSI_/U::length/rMin);
+        if (vdwOn) checkContactHoldsPull(read, rMin);
         if (isWall_) checkPrimitiveWallReach();
         else checkTimeStep();
     }
@@ -190,6 +195,51 @@ private:
             "colloid forces (%g um); use 'neighbor %g bin' or larger, or a "
             "mesh wall", name_, wall_->id, 0.5*neighbor->skin, range, 2*range);
         error->all(FLERR, msg);
+    }
+
+    // The van der Waals pull at contact (held at its inner cut-off value
+    // F0) presses a Walton-Braun contact (loadingStiffness K1) by F0/K1 at
+    // rest, and by about twice that after an approach from afar; the run
+    // stops where F0/K1 exceeds a quarter of the radius, for then particles
+    // can pass through each other or a wall (e.g. A = 1e-18 J, K1 = 0.1
+    // N/m: 5 radii). Checked, where loadingStiffness is defined, for the
+    // particle types present, against each other (pair style) or this
+    // fix's walls; rMin: smallest radius [run units]
+    void checkContactHoldsPull(Colloid::PropertyReader & read, double rMin)
+    {
+        if (!modify->find_fix_property("loadingStiffness", "property/global", "peratomtypepair", 0, 0, name_, false))
+            return;
+        Colloid::TypePairTable K1;
+        read.typePair("loadingStiffness", U::stiffness, -HUGE_VAL, HUGE_VAL, "N/m", K1);
+        std::vector<int> local(nTypes_ + 1, 0), present(nTypes_ + 1, 0);
+        for (int i = 0; i < atom->nlocal; i++) local[atom->type[i]] = 1;
+        MPI_Allreduce(local.data(), present.data(), nTypes_ + 1, MPI_INT, MPI_MAX, world);
+        std::vector<int> partners;
+        if (isWall_) partners = Colloid::wallTypes(wall_);
+        else for (int j = 1; j <= nTypes_; j++) if (present[j]) partners.push_back(j);
+
+        const double R = rMin*U::length;
+        for (int i = 1; i <= nTypes_; i++)
+        {
+            if (!present[i]) continue;
+            for (int j : partners)
+            {
+                if (j < 1 || j > nTypes_) continue;
+                const double F = std::fabs(vdw_[pairIndex(i, j)].force(R, isWall_ ? colloid::wallRadius : R, vdwInnerCutoff_));
+                const double k = K1(i, j);
+                // k <= 0 is the normal model's error
+                if (!(k > 0.0) || F <= 0.25*R*k) continue;
+                char msg[512];
+                std::snprintf(msg, sizeof(msg),
+                    "%s: the van der Waals pull at contact (%s, types %d-%d, radius %g m), "
+                    "%g N, presses the Walton-Braun contact (loadingStiffness %g N/m) by "
+                    "%g radii, more than the allowed 0.25; use loadingStiffness %g nN/um "
+                    "or more, or a smaller hamakerConstant",
+                    name_, isWall_ ? "particle-wall" : "particle-particle", i, j, R, F, k,
+                    F/(k*R), F/(0.25*R)/U::stiffness);
+                error->all(FLERR, msg);
+            }
+        }
     }
 
     // Limits for two of the lightest particles, printed by the pair style:
@@ -314,6 +364,32 @@ private:
             read.kernelError(e, names, ti, tj);
         }
         rangeSI_ = std::max(rangeSI_, p.outerCutoff);
+        if (!isWall_) reportDebyeLength(p);
+    }
+
+    // The force-shift at the outer cut-off hc takes exp(-(hc - h0)/lambda)
+    // of the force at the inner cut-off h0 away (lambda: Debye length);
+    // printed by the pair style, with a warning above 5 % (hc < 3 lambda,
+    // e.g. nearly salt-free water, lambda ~ 1 um)
+    void reportDebyeLength(const colloid::DoubleLayerParameters & p)
+    {
+        if (comm->me != 0 || dl_.empty()) return;
+        const double lambda = dl_.front().debyeLength();
+        const double removed = std::exp(-(p.outerCutoff - p.innerCutoff)/lambda);
+        char msg[512];
+        std::snprintf(msg, sizeof(msg),
+            "%s: Debye length %g m; doubleLayerOuterCutoff %g m is %.3g Debye "
+            "lengths; the force-shift there removes %.3g of the force at the "
+            "inner cut-off", name_, lambda, p.outerCutoff, p.outerCutoff/lambda, removed);
+        if (screen) std::fprintf(screen, "%s\n", msg);
+        if (logfile) std::fprintf(logfile, "%s\n", msg);
+        if (removed <= 0.05) return;
+        std::snprintf(msg, sizeof(msg),
+            "%s: doubleLayerOuterCutoff (%g m) is under 3 Debye lengths (%g m): "
+            "the double layer is cut to %.3g of its strength; use a cut-off of "
+            "%g um or more for the full force", name_, p.outerCutoff, lambda,
+            1.0 - removed, (p.innerCutoff + 3*lambda)/U::length);
+        error->warning(FLERR, msg);
     }
 
     void readLubrication(Colloid::PropertyReader & read)

@@ -67,7 +67,7 @@ public:
         std::snprintf(msg, sizeof(msg),
             "%s: the time step %g s exceeds %g x the %s (%g s); use 'timestep %g' "
             "or less (run units us), or, at your own risk, 'timeStepCheck off' on "
-            "the pair_style line",
+            "the pair_style (or fix wall/gran) line",
             model_, dt, fraction, what, seconds, fraction*seconds/MicroUnits::time);
         if (enforce_)
             lmp_->error->all(FLERR, msg);

@@ -10,7 +10,8 @@
    kt = tangentialStiffnessRatio*K1 without tangential damping.
 
    At the start of a run the pair style prints the contact duration of two
-   of the lightest particles and stops if dt exceeds 1/20 of it
+   of the lightest particles, and each fix wall/gran that of the lightest
+   particle against its wall, and stops if dt exceeds 1/20 of it
    (colloid_time_step.h; "timeStepCheck off" overrides).
 
    Parameters (fix property/global, run units micro, see README.md):
@@ -27,15 +28,19 @@ NORMAL_MODEL(WALTON_BRAUN,walton_braun,20)
 #ifndef NORMAL_MODEL_WALTON_BRAUN_H_
 #define NORMAL_MODEL_WALTON_BRAUN_H_
 
+#include <algorithm>
+#include <cmath>
 #include <stdexcept>
 #include <vector>
 #include "contact_models.h"
+#include "fix_wall_gran.h"
 #include "normal_model_base.h"
 #include "modify.h"
 #include "update.h"
 #include "colloid_properties.h"
 #include "colloid_time_step.h"
 #include "colloid_units.h"
+#include "colloid_wall_types.h"
 #include "timeStepLimits.H"
 #include "waltonBraun.H"
 
@@ -51,6 +56,7 @@ public:
     NormalModel(LAMMPS *lmp, IContactHistorySetup *hsetup, class ContactModelBase *cmb)
     : NormalModelBase(lmp, hsetup, cmb),
       isWall_(cmb->is_wall()),
+      wall_(isWall_ ? dynamic_cast<FixWallGran*>(hsetup) : NULL),
       timeStepCheck_(true),
       nTypes_(0),
       ktRatio_(2.0/7.0)
@@ -102,9 +108,18 @@ public:
         }
 
         // dt <= 1/20 of the contact duration of two of the lightest particles
-        // (printed once, by the pair style)
-        if (isWall_) return;
+        // (pair style), or of the lightest particle against the wall (wall
+        // fix: m* = m, and the wall's stiffness may differ from the pairs')
         Colloid::TimeStepCheck check(lmp, caller, timeStepCheck_);
+        if (isWall_)
+        {
+            const double tc = check.smallest([&](double m, double, int type)
+            {
+                return wallContactTime(m, type);
+            });
+            check.limit("Walton-Braun contact duration of the lightest particle against a wall", tc, 0.05);
+            return;
+        }
         const double tc = check.smallest([&](double m, double, int type)
         {
             const colloid::WaltonBraunNormal & wb = kernels_[(type - 1)*nTypes_ + (type - 1)];
@@ -157,7 +172,23 @@ public:
     void endPass(SurfacesIntersectData &, ForceData &, ForceData &) {}
 
 private:
+    // Contact duration [s] of a particle of mass m [kg] and this type
+    // against this wall fix's walls (the primitive wall's type, or each
+    // mesh's), the shortest
+    double wallContactTime(double m, int type) const
+    {
+        double tc = HUGE_VAL;
+        for (int j : Colloid::wallTypes(wall_))
+        {
+            if (j < 1 || j > nTypes_) continue;
+            const colloid::WaltonBraunNormal & wb = kernels_[(type - 1)*nTypes_ + (j - 1)];
+            tc = std::min(tc, colloid::timeStep::waltonBraunContactTime(m, wb.loadingStiffness(), wb.unloadingStiffness()));
+        }
+        return tc;
+    }
+
     const bool isWall_;
+    FixWallGran *const wall_;   // the wall fix of a wall model, else NULL
     bool timeStepCheck_;
     int historyOffset_;
     int nTypes_;

@@ -9,6 +9,11 @@
    colloid::DiRenzoDiMaio, seed 000), with G* from the particle's and the
    wall's youngsModulus and poissonsRatio.
 
+   At the start of a run the pair style, and each fix wall/gran without
+   diRenzoDiMaio, prints the half-period pi sqrt(m_t/K_T0) of the
+   tangential spring and stops if dt exceeds 1/20 of it (colloid_time_step.h;
+   "timeStepCheck off" overrides).
+
    Torques: the tangential force F acts at the contact point, cri (crj)
    from the centre of i (j) along -en (+en): torque_i = -cri en x F,
    torque_j = -crj en x F.
@@ -28,16 +33,22 @@ TANGENTIAL_MODEL(TANGENTIAL_WALTON_BRAUN,walton_braun,20)
 #ifndef TANGENTIAL_MODEL_WALTON_BRAUN_H_
 #define TANGENTIAL_MODEL_WALTON_BRAUN_H_
 
+#include <algorithm>
+#include <cmath>
 #include <stdexcept>
 #include <vector>
 #include "contact_models.h"
+#include "fix_wall_gran.h"
 #include "tangential_model_base.h"
 #include "modify.h"
 #include "update.h"
 #include "colloid_properties.h"
+#include "colloid_time_step.h"
 #include "colloid_units.h"
+#include "colloid_wall_types.h"
 #include "diRenzoDiMaio.H"
 #include "elasticMaterial.H"
+#include "timeStepLimits.H"
 #include "waltonBraun.H"
 
 namespace LIGGGHTS {
@@ -55,7 +66,9 @@ public:
     TangentialModel(LAMMPS *lmp, IContactHistorySetup *hsetup, class ContactModelBase *cmb)
     : TangentialModelBase(lmp, hsetup, cmb),
       isWall_(cmb->is_wall()),
+      wall_(isWall_ ? dynamic_cast<FixWallGran*>(hsetup) : NULL),
       diRenzoWall_(false),
+      timeStepCheck_(true),
       nTypes_(0)
     {
         // vectors change sign when seen from the other particle ("1")
@@ -75,6 +88,7 @@ public:
     void registerSettings(Settings & settings)
     {
         settings.registerOnOff("diRenzoDiMaio", diRenzoWall_, false);
+        settings.registerOnOff("timeStepCheck", timeStepCheck_, true);
     }
 
     void postSettings(IContactHistorySetup *, ContactModelBase *) {}
@@ -133,6 +147,7 @@ public:
         {
             read.kernelError(err, names, ti, tj);
         }
+        checkTimeStep();
     }
 
     void surfacesIntersect(const SurfacesIntersectData & sidata, ForceData & i_forces, ForceData & j_forces)
@@ -205,6 +220,32 @@ public:
     void endPass(SurfacesIntersectData &, ForceData &, ForceData &) {}
 
 private:
+    // dt <= 1/20 of pi sqrt(m_t/K_T0), the half-period of the tangential
+    // spring as the normal contact's duration is that of the normal one,
+    // with m_t = 2/7 m* for solid spheres (the contact point moves with the
+    // rotation too): two of the lightest particles (pair style),
+    // or the lightest particle against this fix's walls (m* = m). Di
+    // Renzo-Di Maio walls are not checked: their stiffness grows with the
+    // overlap, which a start-up check does not know.
+    void checkTimeStep()
+    {
+        if (isWall_ && diRenzoWall_) return;
+        Colloid::TimeStepCheck check(lmp, "tangential walton_braun", timeStepCheck_);
+        const std::vector<int> walls = Colloid::wallTypes(wall_);
+        const double t = check.smallest([&](double m, double, int type)
+        {
+            double k = 0.0;
+            if (!isWall_) k = waltonBraun_[(type - 1)*nTypes_ + (type - 1)].parameters().initialStiffness;
+            for (int j : walls)
+                if (j >= 1 && j <= nTypes_)
+                    k = std::max(k, waltonBraun_[(type - 1)*nTypes_ + (j - 1)].parameters().initialStiffness);
+            if (!(k > 0.0)) return HUGE_VAL;
+            return colloid::timeStep::linearContactTime(2.0/7.0*(isWall_ ? m : m/2), k);
+        });
+        check.limit(isWall_ ? "tangential half-period of the lightest particle against a wall"
+                            : "tangential half-period of two of the lightest particles", t, 0.05);
+    }
+
     static colloid::Vec3 stored(const double *hist, int at, double toSI)
     {
         return {{hist[at]*toSI, hist[at + 1]*toSI, hist[at + 2]*toSI}};
@@ -216,7 +257,9 @@ private:
     }
 
     const bool isWall_;
+    FixWallGran *const wall_;   // the wall fix of a wall model, else NULL
     bool diRenzoWall_;
+    bool timeStepCheck_;
     int nTypes_;
     int offset_;
     std::vector<colloid::WaltonBraunTangential> waltonBraun_;  // per type pair
