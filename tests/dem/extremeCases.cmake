@@ -19,7 +19,7 @@ foreach(name
         extremeLowSaltForce extremeHighSaltForce)
     add_test(NAME dem.${name} COMMAND demExtremeTests --gtest_filter=*.${name})
     set_tests_properties(dem.${name} PROPERTIES
-        TIMEOUT 60
+        TIMEOUT 60 LABELS dem
         PASS_REGULAR_EXPRESSION "\\[  PASSED  \\] 1 test\\."
         WORKING_DIRECTORY ${CMAKE_CURRENT_BINARY_DIR})
 endforeach()
@@ -46,7 +46,7 @@ if(LIGGGHTS_EXECUTABLE)
             startupLimitStiffTangential)
         add_test(NAME dem.${name} COMMAND demProcessTests --gtest_filter=*.${name})
         set_tests_properties(dem.${name} PROPERTIES
-            TIMEOUT 60
+            TIMEOUT 60 LABELS dem
             PASS_REGULAR_EXPRESSION "\\[  PASSED  \\] 1 test\\."
             WORKING_DIRECTORY ${CMAKE_CURRENT_BINARY_DIR})
     endforeach()

@@ -9,7 +9,7 @@ target_link_libraries(reboundStokesTests PRIVATE liggghtsColloid GTest::gtest GT
 foreach(name reboundStokesModel reboundStokesPrimitiveWall reboundStokesExperiments)
     add_test(NAME dem.${name} COMMAND reboundStokesTests --gtest_filter=*.${name})
     set_tests_properties(dem.${name} PROPERTIES
-        TIMEOUT 60
+        TIMEOUT 60 LABELS dem
         PASS_REGULAR_EXPRESSION "\\[  PASSED  \\] 1 test\\."
         WORKING_DIRECTORY ${CMAKE_CURRENT_BINARY_DIR})
 endforeach()
