@@ -2,11 +2,14 @@
 # steady flow, DEM surfaces, coupled particle run with Walton-Braun contact
 # and van der Waals, double layer and lubrication) at test size.
 #
-# slotCoater.serial / .parallel: present = inserted - removed at every
-#   write, with particles both inserted and removed, and each particle file
-#   holding the particles present (checkBookkeeping.py).
-# slotCoater.serialVsParallel: the two runs insert the same particles and
-#   agree on the particles present and their mean velocity within 1 %.
+# slotCoater.serial / .parallel: the run reaches its end time; present =
+#   inserted - removed at every write, each particle file holding the
+#   particles present; the initial fill and the feed hold the numbers of
+#   particles the solids fraction implies; particles were removed
+#   (checkBookkeeping.py).
+# slotCoater.serialVsParallel: from the same initial fill, the two runs
+#   insert, hold and remove the same particles and agree on their mean
+#   velocity within 1 %.
 
 set(slotCoaterDir ${CMAKE_CURRENT_SOURCE_DIR}/slotCoater)
 set(slotCoaterWork ${CMAKE_CURRENT_BINARY_DIR}/slotCoater)

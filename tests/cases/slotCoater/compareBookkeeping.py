@@ -1,11 +1,11 @@
 #!/usr/bin/env python3
 """Serial and 2-rank runs of the slot-coater tutorial at test size
-(runSlotCoaterRun.sh) agree: the same number of particles inserted (the
-fill and the feed are fixed by the solids fraction), the particles present
-at the end within 1 %, and the mean particle velocity within 1 % of its
-magnitude, per component.  The random initial fill is drawn per rank, so
-the runs are statistically, not bit-for-bit, the same: the few particles
-removed near the outlet in 3 us (single digits) are printed, not compared.
+(runSlotCoaterRun.sh) agree: both start from the same initial fill
+(DEM/fill.data, packed once, serially, by the tutorial's Allrun), so they
+must insert, hold and remove the same numbers of particles (exactly), and
+their mean particle velocity must agree within 1 % of its magnitude, per
+component (measured: about 1e-5; the feed's few particles are placed per
+rank, but all move at the feed velocity until they pass the inlet).
 
 usage: compareBookkeeping.py SERIALCASE PARALLELCASE
 """
@@ -28,11 +28,8 @@ def main():
           % ((pS, iS, rS) + tuple(vS)))
     print("2 ranks:  present %d inserted %d removed %d, mean v (%.6g %.6g %.6g) m/s"
           % ((pP, iP, rP) + tuple(vP)))
-    ok = iS == iP
-    print("inserted equal: %s" % ("yes" if ok else "NO"))
-    dPresent = abs(pP - pS)/pS
-    print("present differ by %.3g %% (tolerance %g %%)" % (100*dPresent, 100*TOL))
-    ok = ok and dPresent <= TOL
+    ok = (iS, pS, rS) == (iP, pP, rP)
+    print("inserted, present, removed equal: %s" % ("yes" if ok else "NO"))
     speed = math.sqrt(sum(c*c for c in vS))
     for k, name in enumerate("xyz"):
         err = abs(vP[k] - vS[k])/speed
