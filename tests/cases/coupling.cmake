@@ -31,7 +31,8 @@ set_tests_properties(case.coupling.settling.meshesAgree PROPERTIES
     FIXTURES_REQUIRED "couplingSettling_hex;couplingSettling_tet;couplingSettling_polyDual")
 
 foreach(variant missingKeyword negativeDiameter negativeDensity unknownDragModel
-                inconsistentDeltaT demStepTooLong gravityInScript demScriptError)
+                inconsistentDeltaT demStepTooLong gravityInScript demScriptError
+                restart)
     add_test(NAME case.coupling.badInput.${variant}
         COMMAND ${couplingDir}/runBadInputTest.sh ${variant} ${couplingWork}/badInput_${variant})
     set_tests_properties(case.coupling.badInput.${variant} PROPERTIES

@@ -31,6 +31,19 @@ std::string defineVariable(const char* name, const double value)
 void Foam::demCoupling::checkTimeStep() const
 {
     const Time& runTime = mesh_.time();
+
+    // The DEM state (particles, contact histories) is not saved with the
+    // time folders: a run that starts later would silently start the DEM
+    // afresh
+    if (runTime.startTime().value() != 0)
+    {
+        FatalIOErrorInFunction(runTime.controlDict())
+            << "The run starts at time " << runTime.startTime().value()
+            << " s (keywords 'startFrom'/'startTime' in "
+            << runTime.controlDict().name() << "); colloidDEMFoam cannot"
+            << " restart (the DEM state is not saved with the time"
+            << " folders): start from time 0" << exit(FatalIOError);
+    }
     const scalar deltaT = runTime.deltaTValue();
     const scalar couplingDt = props_.couplingTimeStep();
 

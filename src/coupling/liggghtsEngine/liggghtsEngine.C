@@ -194,12 +194,6 @@ std::string Foam::liggghtsEngine::unitStyle() const
 }
 
 
-double Foam::liggghtsEngine::timeStep() const
-{
-    return engine(lmp_)->update->dt;
-}
-
-
 int Foam::liggghtsEngine::nFixesOfStyle(const std::string& style) const
 {
     return engine(lmp_)->modify->n_fixes_style_strict(style.c_str());

@@ -5,7 +5,7 @@
 # usage: runBadInputTest.sh variant workDir
 #   variants: missingKeyword negativeDiameter negativeDensity
 #             unknownDragModel inconsistentDeltaT demStepTooLong
-#             gravityInScript demScriptError
+#             gravityInScript demScriptError restart
 set -e
 export PYTHONDONTWRITEBYTECODE=1   # no __pycache__ in the source tree
 variant=$1
@@ -53,6 +53,11 @@ case $variant in
         # LIGGGHTS exits by itself; its error must reach the solver's output
         echo "fix oops all noSuchFixStyle" >> constant/DEM/in.liggghts
         expect="ERROR: Invalid fix style: \"noSuchFixStyle\"" ;;
+    restart)
+        # a later time folder and startFrom latestTime: no restart support
+        cp -r 0 1e-07
+        foamDictionary system/controlDict -entry startFrom -set latestTime > /dev/null
+        expect="The run starts at time 1e-07 s .*cannot restart" ;;
     *)  echo "unknown variant $variant"; exit 2 ;;
 esac
 
