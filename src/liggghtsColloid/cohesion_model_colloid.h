@@ -295,22 +295,11 @@ private:
         Colloid::TypePairTable A;
         read.typePair("hamakerConstant", U::energy, -HUGE_VAL, HUGE_VAL, "J", A);
         vdw_.clear();
-        int ti = 0, tj = 0;  // the type pair being checked, for messages
-        try
+        read.forEachTypePair(nTypes_, names, [&](int i, int j)
         {
-            for (int i = 1; i <= nTypes_; i++)
-                for (int j = 1; j <= nTypes_; j++)
-                {
-                    ti = i;
-                    tj = j;
-                    p.hamakerConstant = A(i, j);
-                    vdw_.push_back(colloid::VanDerWaals(p));
-                }
-        }
-        catch (const std::invalid_argument & e)
-        {
-            read.kernelError(e, names, ti, tj);
-        }
+            p.hamakerConstant = A(i, j);
+            vdw_.push_back(colloid::VanDerWaals(p));
+        });
         rangeSI_ = std::max(rangeSI_, p.outerCutoff);
         vdwInnerCutoff_ = p.innerCutoff;
     }
@@ -346,23 +335,12 @@ private:
         std::vector<double> zeta;
         read.perType("zetaPotential", 1.0, -HUGE_VAL, HUGE_VAL, "V", zeta);
         dl_.clear();
-        int ti = 0, tj = 0;  // the type pair being checked, for messages
-        try
+        read.forEachTypePair(nTypes_, names, [&](int i, int j)
         {
-            for (int i = 1; i <= nTypes_; i++)
-                for (int j = 1; j <= nTypes_; j++)
-                {
-                    ti = i;
-                    tj = j;
-                    p.zeta1 = zeta[i];
-                    p.zeta2 = zeta[j];
-                    dl_.push_back(colloid::DoubleLayer(p));
-                }
-        }
-        catch (const std::invalid_argument & e)
-        {
-            read.kernelError(e, names, ti, tj);
-        }
+            p.zeta1 = zeta[i];
+            p.zeta2 = zeta[j];
+            dl_.push_back(colloid::DoubleLayer(p));
+        });
         rangeSI_ = std::max(rangeSI_, p.outerCutoff);
         if (!isWall_) reportDebyeLength(p);
     }

@@ -157,6 +157,26 @@ public:
         error_->all(FLERR, msg.c_str());
     }
 
+    // make(i, j) for every type pair, i and j = 1..nTypes in row order (the
+    // order of the models' per-pair kernel tables); a kernel's parameter
+    // check (std::invalid_argument) stops the run as kernelError does,
+    // naming the type pair being built
+    template<class Make>
+    void forEachTypePair(int nTypes, const char *const *names, Make make)
+    {
+        int ti = 0, tj = 0;
+        try
+        {
+            for (ti = 1; ti <= nTypes; ti++)
+                for (tj = 1; tj <= nTypes; tj++)
+                    make(ti, tj);
+        }
+        catch (const std::invalid_argument & e)
+        {
+            kernelError(e, names, ti, tj);
+        }
+    }
+
 private:
     void check(const char *name, const char *where, double value, double lo, double hi, const char *siUnit)
     {

@@ -88,24 +88,13 @@ public:
         read.typePair("coefficientRestitution", 1.0, -HUGE_VAL, HUGE_VAL, "", e);
         ktRatio_ = read.optionalScalar("tangentialStiffnessRatio", 2.0/7.0, 1.0, 0.0, 10.0, "");
         kernels_.clear();
-        int ti = 0, tj = 0;  // the type pair being checked, for messages
-        try
+        read.forEachTypePair(nTypes_, names, [&](int i, int j)
         {
-            for (int i = 1; i <= nTypes_; i++)
-                for (int j = 1; j <= nTypes_; j++)
-                {
-                    ti = i;
-                    tj = j;
-                    colloid::WaltonBraunNormalParameters p;
-                    p.loadingStiffness = K1(i, j);
-                    p.restitution = e(i, j);
-                    kernels_.push_back(colloid::WaltonBraunNormal(p));
-                }
-        }
-        catch (const std::invalid_argument & err)
-        {
-            read.kernelError(err, names, ti, tj);
-        }
+            colloid::WaltonBraunNormalParameters p;
+            p.loadingStiffness = K1(i, j);
+            p.restitution = e(i, j);
+            kernels_.push_back(colloid::WaltonBraunNormal(p));
+        });
 
         // dt <= 1/20 of the contact duration of two of the lightest particles
         // (pair style), or of the lightest particle against the wall (wall

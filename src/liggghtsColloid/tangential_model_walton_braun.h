@@ -117,36 +117,25 @@ public:
         }
         waltonBraun_.clear();
         diRenzo_.clear();
-        int ti = 0, tj = 0;  // the type pair being checked, for messages
-        try
+        read.forEachTypePair(nTypes_, names, [&](int i, int j)
         {
-            for (int i = 1; i <= nTypes_; i++)
-                for (int j = 1; j <= nTypes_; j++)
-                {
-                    ti = i;
-                    tj = j;
-                    colloid::WaltonBraunTangentialParameters p;
-                    p.initialStiffness = kt(i, j);
-                    p.friction = mu(i, j);
-                    waltonBraun_.push_back(colloid::WaltonBraunTangential(p));
-                    if (!diRenzo) continue;
-                    colloid::ElasticMaterial a, b;
-                    a.youngsModulus = E[i];
-                    a.poissonsRatio = nu[i];
-                    b.youngsModulus = E[j];
-                    b.poissonsRatio = nu[j];
-                    a.check();
-                    b.check();
-                    colloid::DiRenzoDiMaioParameters q;
-                    q.effectiveShearModulus = colloid::effectiveShearModulus(a, b);
-                    q.friction = mu(i, j);
-                    diRenzo_.push_back(colloid::DiRenzoDiMaio(q));
-                }
-        }
-        catch (const std::invalid_argument & err)
-        {
-            read.kernelError(err, names, ti, tj);
-        }
+            colloid::WaltonBraunTangentialParameters p;
+            p.initialStiffness = kt(i, j);
+            p.friction = mu(i, j);
+            waltonBraun_.push_back(colloid::WaltonBraunTangential(p));
+            if (!diRenzo) return;
+            colloid::ElasticMaterial a, b;
+            a.youngsModulus = E[i];
+            a.poissonsRatio = nu[i];
+            b.youngsModulus = E[j];
+            b.poissonsRatio = nu[j];
+            a.check();
+            b.check();
+            colloid::DiRenzoDiMaioParameters q;
+            q.effectiveShearModulus = colloid::effectiveShearModulus(a, b);
+            q.friction = mu(i, j);
+            diRenzo_.push_back(colloid::DiRenzoDiMaio(q));
+        });
         checkTimeStep();
     }
 

@@ -16,6 +16,7 @@
     Rs = R/2, gamma = 6 pi mu R. The time at which the gap reaches 2 nm
     agrees within 1 %.
 \*---------------------------------------------------------------------------*/
+#include "approachTime.H"
 #include "liggghtsRun.H"
 
 #include <gtest/gtest.h>
@@ -51,23 +52,10 @@ struct LubricatedPair
     // time [s] at which the gap falls to hEnd, RK4 with step dt [s]
     double timeToGap(double hStart, double hEnd, double dt) const
     {
-        double h = hStart, v = 0, t = 0;
-        auto dv = [&](double hh, double vv)
+        return approachTime(hStart, hEnd, dt, [this](double hh, double vv)
         {
             return (attraction(hh) - gamma*vv - 2*resistance(hh)*vv)/m;
-        };
-        while (true)
-        {
-            const double k1h = -2*v, k1v = dv(h, v);
-            const double k2h = -2*(v + dt/2*k1v), k2v = dv(h + dt/2*k1h, v + dt/2*k1v);
-            const double k3h = -2*(v + dt/2*k2v), k3v = dv(h + dt/2*k2h, v + dt/2*k2v);
-            const double k4h = -2*(v + dt*k3v), k4v = dv(h + dt*k3h, v + dt*k3v);
-            const double hNew = h + dt/6*(k1h + 2*k2h + 2*k3h + k4h);
-            v += dt/6*(k1v + 2*k2v + 2*k3v + k4v);
-            if (hNew <= hEnd) return t + dt*(h - hEnd)/(h - hNew);
-            h = hNew;
-            t += dt;
-        }
+        });
     }
 };
 
