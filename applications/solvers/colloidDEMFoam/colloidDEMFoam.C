@@ -3,14 +3,21 @@ Application
     colloidDEMFoam
 
 Description
-    CFD-DEM solver for dilute colloidal suspensions.  The fluid velocity U
-    is a steady field read from the start time (computed beforehand, e.g.
-    by simpleFoam) and is not solved (one-way coupling).  A LIGGGHTS DEM
-    instance runs in the same process; each time step is one coupling step
-    of couplingInterval DEM steps (see constant/couplingProperties).
+    CFD-DEM solver for colloidal suspensions.  A LIGGGHTS DEM instance runs
+    in the same process; each time step is one coupling step of
+    couplingInterval DEM steps (see constant/couplingProperties).
 
-    Output: the fluid fields in the time folders, the particles in
-    VTK/particles_<timeIndex>.vtk, the DEM log in log.liggghts.
+    couplingMode oneWay: the fluid velocity U is a steady field read from
+    the start time (computed beforehand, e.g. by simpleFoam), never solved.
+
+    couplingMode twoWay: after each DEM interval the fluid is solved with
+    the particles' fluid fraction and drag impulse (averagedFluid: locally
+    averaged Navier-Stokes, Model A or B, PIMPLE), and the forces of the
+    next interval are taken from it.
+
+    Output: the fluid fields (two-way: with voidfraction) in the time
+    folders, the particles in VTK/particles_<timeIndex>.vtk, the DEM log in
+    log.liggghts.
 
     LIGGGHTS contact models of the project's plugin are registered when
     the plugin library is loaded, e.g. with
@@ -21,13 +28,15 @@ Description
 
 #include "fvCFD.H"
 #include "demCoupling.H"
+#include "averagedFluid.H"
 
 int main(int argc, char *argv[])
 {
     argList::addNote
     (
-        "One-way coupled CFD-DEM for colloidal suspensions:"
-        " steady fluid from the start time, LIGGGHTS in-process."
+        "CFD-DEM for colloidal suspensions, LIGGGHTS in-process:"
+        " one-way (steady fluid from the start time) or two-way (locally"
+        " averaged fluid solved with the particles)."
     );
 
     #include "setRootCase.H"
@@ -35,7 +44,13 @@ int main(int argc, char *argv[])
     #include "createMesh.H"
     #include "createFields.H"
 
-    demCoupling coupling(U, g);
+    demCoupling coupling(U, g, pPtr.get());
+
+    autoPtr<averagedFluid> fluid;
+    if (coupling.twoWay())
+    {
+        fluid.reset(new averagedFluid(mesh, U, pPtr(), coupling));
+    }
 
     coupling.write();
 
@@ -45,7 +60,17 @@ int main(int argc, char *argv[])
     {
         Info<< "Time = " << runTime.timeName() << nl << endl;
 
+        // DEM interval with the forces of the fluid at the old time, then
+        // (two-way) the particles' fluid fraction and drag impulse
         coupling.evolve();
+
+        if (fluid.valid())
+        {
+            fluid->solve();
+        }
+
+        // Forces of the next interval from the (new) fluid
+        coupling.updateForces();
 
         runTime.write();
 

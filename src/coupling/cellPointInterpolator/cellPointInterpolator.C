@@ -13,6 +13,12 @@ Foam::cellPointInterpolator::cellPointInterpolator
 {}
 
 
+void Foam::cellPointInterpolator::update()
+{
+    pointField_ = volPointInterpolation::New(mesh_).interpolate(field_);
+}
+
+
 Foam::vector Foam::cellPointInterpolator::interpolate
 (
     const point& p,

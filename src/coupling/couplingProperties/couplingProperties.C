@@ -64,7 +64,10 @@ Foam::couplingProperties::couplingProperties(const objectRegistry& obr)
     particleDensity_(0),
     demTimeStep_(0),
     couplingInterval_(0),
-    demScreen_(false)
+    demScreen_(false),
+    twoWay_(false),
+    modelB_(false),
+    epsilonMin_(1)
 {
     const dictionary& dict = *this;
 
@@ -72,14 +75,52 @@ Foam::couplingProperties::couplingProperties(const objectRegistry& obr)
     {
         FatalIOErrorInFunction(dict)
             << "Missing keyword 'couplingMode' in " << dict.name()
-            << " (allowed: oneWay)" << exit(FatalIOError);
+            << " (allowed: oneWay twoWay)" << exit(FatalIOError);
     }
     const word mode(dict.get<word>("couplingMode"));
-    if (mode != "oneWay")
+    if (mode != "oneWay" && mode != "twoWay")
     {
         FatalIOErrorInFunction(dict)
             << "Keyword 'couplingMode' in " << dict.name() << " is '"
-            << mode << "'; allowed: oneWay" << exit(FatalIOError);
+            << mode << "'; allowed: oneWay twoWay" << exit(FatalIOError);
+    }
+    twoWay_ = (mode == "twoWay");
+
+    if (twoWay_)
+    {
+        const dictionary& tw = requiredSubDict(dict, "twoWay");
+        if (!tw.found("modelType"))
+        {
+            FatalIOErrorInFunction(tw)
+                << "Missing keyword 'modelType' in " << tw.name()
+                << " (allowed: A B)" << exit(FatalIOError);
+        }
+        const word model(tw.get<word>("modelType"));
+        if (model != "A" && model != "B")
+        {
+            FatalIOErrorInFunction(tw)
+                << "Keyword 'modelType' in " << tw.name() << " is '"
+                << model << "'; allowed: A (fluid -eps grad p, particles"
+                << " feel drag and pressure gradient) or B (fluid"
+                << " -grad p, particles feel drag/eps)"
+                << exit(FatalIOError);
+        }
+        modelB_ = (model == "B");
+
+        if (!tw.found("epsilonMin"))
+        {
+            FatalIOErrorInFunction(tw)
+                << "Missing keyword 'epsilonMin' in " << tw.name()
+                << " (allowed range: (0, 1))" << exit(FatalIOError);
+        }
+        epsilonMin_ = tw.get<scalar>("epsilonMin");
+        if (!(epsilonMin_ > 0 && epsilonMin_ < 1))
+        {
+            FatalIOErrorInFunction(tw)
+                << "Keyword 'epsilonMin' in " << tw.name() << " is "
+                << epsilonMin_ << "; allowed range: (0, 1)"
+                << exit(FatalIOError);
+        }
     }
 
     // Fluid: mu directly, or nu times rho

@@ -1,6 +1,8 @@
 #include "demCoupling.H"
 #include "demUnits.H"
 #include "particleVTKWriter.H"
+#include "fvcGrad.H"
+#include "zeroGradientFvPatchFields.H"
 #include "mathematicalConstants.H"
 #include "Time.H"
 #include "OSspecific.H"
@@ -62,7 +64,16 @@ void Foam::demCoupling::checkTimeStep() const
     const scalar d = props_.particleDiameter();
     const scalar mass =
         props_.particleDensity()*constant::mathematical::pi*pow3(d)/6;
-    const scalar tau = mass/drag_->K(d, 0);
+    particleContext c;
+    c.d = d;
+    c.volume = constant::mathematical::pi*pow3(d)/6;
+    c.mass = mass;
+    c.v = c.U = c.gradp = c.g = Zero;
+    c.eps = 1;
+    c.rho = props_.rhoFluid();
+    c.mu = props_.muFluid();
+    c.cell = -1;
+    const scalar tau = mass/drag_->K(c);
     Info<< "Time-step limit, Stokes relaxation time m/K of the particles: "
         << tau << " s; DEM timeStep " << props_.demTimeStep() << " s is "
         << props_.demTimeStep()/tau << " of it (the DEM prints its own"
@@ -177,6 +188,10 @@ void Foam::demCoupling::startDEM()
     // Fluid rank and cell of each particle: the start of the next search
     dem.command("fix colloidCell all property/atom colloidCell vector yes no no -1 -1");
 
+    // Unwrapped position at the start of the interval [um]: the drag
+    // impulse of the interval
+    dem.command("fix colloidX0 all property/atom colloidX0 vector yes no no 0 0 0");
+
     // 0 until the coupling has counted the particle as inserted
     dem.command("fix colloidSeen all property/atom colloidSeen scalar yes no no 0");
 
@@ -284,20 +299,214 @@ void Foam::demCoupling::locateLocal
 }
 
 
+void Foam::demCoupling::checkTransientSetup() const
+{
+    const dictionary& ddt = mesh_.schemesDict().subDict("ddtSchemes");
+    word scheme("none");
+    if (ddt.found("default"))
+    {
+        ITstream& is = ddt.lookup("default");
+        is >> scheme;
+    }
+    if (scheme == "steadyState" || scheme == "none")
+    {
+        FatalIOErrorInFunction(ddt)
+            << "couplingMode twoWay solves the fluid in time: keyword"
+            << " 'default' of ddtSchemes in " << ddt.name() << " is '"
+            << scheme << "'; allowed: Euler, backward, CrankNicolson"
+            << exit(FatalIOError);
+    }
+
+    const dictionary& solution = mesh_.solutionDict();
+    if (!solution.isDict("PIMPLE"))
+    {
+        FatalIOErrorInFunction(solution)
+            << "couplingMode twoWay needs a 'PIMPLE' dictionary in "
+            << solution.name() << " (nOuterCorrectors, nCorrectors,"
+            << " nNonOrthogonalCorrectors)" << exit(FatalIOError);
+    }
+    const dictionary& solvers = solution.subDict("solvers");
+    for (const char* field : {"p", "U"})
+    {
+        if (!solvers.found(field) && !solvers.found("\"(U|p)\""))
+        {
+            FatalIOErrorInFunction(solvers)
+                << "couplingMode twoWay needs a linear solver for '"
+                << field << "' in " << solvers.name()
+                << exit(FatalIOError);
+        }
+    }
+    if (!p_)
+    {
+        FatalErrorInFunction
+            << "couplingMode twoWay needs the pressure field p in "
+            << mesh_.time().timeName() << exit(FatalError);
+    }
+}
+
+
+void Foam::demCoupling::checkForceModels() const
+{
+    for (const forceModel& model : forces_)
+    {
+        if (!model.needsPressureGradient())
+        {
+            continue;
+        }
+        if (props_.modelB())
+        {
+            FatalIOErrorInFunction(props_)
+                << "Force model '" << model.type() << "' (keyword"
+                << " 'forceModels' in " << props_.objectPath() << ") with"
+                << " modelType B: Model B's drag (K/eps) carries the"
+                << " pressure gradient; remove it, or use modelType A"
+                << exit(FatalIOError);
+        }
+        if (!p_)
+        {
+            FatalIOErrorInFunction(props_)
+                << "Force model '" << model.type() << "' (keyword"
+                << " 'forceModels' in " << props_.objectPath() << ") needs the"
+                << " pressure field p, which is not in "
+                << mesh_.time().timeName() << exit(FatalIOError);
+        }
+    }
+}
+
+
+void Foam::demCoupling::gatherRecords()
+{
+    countNewParticles();
+
+    pointField position;
+    vectorField Uf;
+    labelList cell;
+    scalarField wallDist;
+    locateLocal(false, position, Uf, proc_, cell, wallDist);
+
+    liggghtsEngine& dem = engine_();
+    const int n = dem.nLocal();
+    double** v = dem.v();
+    double* r = dem.radius();
+    double* m = dem.rmass();
+    double* Ksl = dem.scalarProperty("Ksl");
+    double** uf = dem.vectorProperty("uf");
+    double** x0 = dem.vectorProperty("colloidX0");
+
+    const scalar T = props_.couplingTimeStep()/demUnits::time;
+
+    scalarField radius(n), mass(n), K(n);
+    vectorField velocity(n), F(n);
+    for (int i = 0; i < n; ++i)
+    {
+        radius[i] = demUnits::length*r[i];
+        mass[i] = demUnits::mass*m[i];
+        velocity[i] = demUnits::velocity*vector(v[i][0], v[i][1], v[i][2]);
+        K[i] = demUnits::dragCoeff*Ksl[i];
+
+        // Drag impulse of the interval / T: Ksl (uf - (x_end - x_start)/T)
+        // (zero for particles inserted during the interval: Ksl = 0)
+        double xu[3];
+        dem.unwrapped(i, xu);
+        vector f;
+        for (direction k = 0; k < 3; ++k)
+        {
+            f[k] = Ksl[i]*(uf[i][k] - (xu[k] - x0[i][k])/T);
+        }
+        F[i] = demUnits::force*f;
+    }
+
+    records_.gather(proc_, cell, position, radius, mass, velocity, K, F);
+
+    if (props_.twoWay())
+    {
+        depositRecords();
+    }
+}
+
+
+void Foam::demCoupling::depositRecords()
+{
+    scalarField solidVolume(mesh_.nCells(), 0);
+    scalarField Kc(mesh_.nCells(), 0);
+    vectorField Fc(mesh_.nCells(), Zero);
+
+    deposit_.deposit
+    (
+        records_.position, records_.cell, records_.radius,
+        records_.dragCoeff, records_.dragForce,
+        solidVolume, Kc, Fc
+    );
+
+    const scalarField& V = mesh_.V();
+    const scalar rho = props_.rhoFluid();
+    const scalar epsMin = props_.epsilonMin();
+
+    scalarField& eps = voidfraction_->primitiveFieldRef();
+    label nClipped = 0;
+    forAll(eps, celli)
+    {
+        eps[celli] = 1 - solidVolume[celli]/V[celli];
+        if (eps[celli] < epsMin)
+        {
+            eps[celli] = epsMin;
+            ++nClipped;
+        }
+    }
+    voidfraction_->correctBoundaryConditions();
+
+    Kexchange_->primitiveFieldRef() = Kc/(rho*V);
+    Kexchange_->correctBoundaryConditions();
+    Fexchange_->primitiveFieldRef() = -Fc/(rho*V);
+    Fexchange_->correctBoundaryConditions();
+
+    // The bookkeeping the momentum test reads: what the particles received
+    // (sum over records) against what the cells hold (sum over cells)
+    const scalar particleVolume = returnReduce
+    (
+        sum(4.0/3.0*constant::mathematical::pi*pow3(records_.radius)),
+        sumOp<scalar>()
+    );
+    const scalar solid = gSum(solidVolume);
+    Info<< "Fluid fraction: min " << gMin(eps) << ", solid volume "
+        << solid << " m^3 of particles' " << particleVolume
+        << " m^3 (relative difference "
+        << mag(solid - particleVolume)/max(particleVolume, VSMALL) << ")";
+    if (returnReduce(nClipped, sumOp<label>()))
+    {
+        Info<< "; " << returnReduce(nClipped, sumOp<label>())
+            << " cells clipped at epsilonMin " << epsMin;
+    }
+    const vector onParticles = gSum(records_.dragForce);
+    const vector onFluid = -gSum(Fc);
+    Info<< nl << "Momentum exchange: drag on particles " << onParticles
+        << " N, on fluid " << onFluid << " N (relative difference "
+        << mag(onParticles + onFluid)/max(mag(onParticles), VSMALL) << ")"
+        << endl;
+}
+
+
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * //
 
 Foam::demCoupling::demCoupling
 (
     const volVectorField& U,
-    const uniformDimensionedVectorField& g
+    const uniformDimensionedVectorField& g,
+    const volScalarField* p
 )
 :
     mesh_(U.mesh()),
     g_(g),
+    p_(p),
     props_(U.mesh()),
-    drag_(dragModel::New(props_, props_.muFluid())),
+    drag_(dragModel::New(props_)),
+    forces_(forceModel::New(props_)),
     locator_(U.mesh()),
     exchange_(U, locator_),
+    UInterp_(U),
+    records_(),
+    deposit_(U.mesh(), locator_),
+    proc_(),
     engine_(),
     nInserted_(0),
     demSeconds_(0),
@@ -305,6 +514,55 @@ Foam::demCoupling::demCoupling
     particleSteps_(0)
 {
     checkTimeStep();
+    checkForceModels();
+
+    if (props_.twoWay())
+    {
+        checkTransientSetup();
+
+        Info<< "Two-way coupling, Model " << (props_.modelB() ? "B" : "A")
+            << ", fluid fraction bounded below by "
+            << props_.epsilonMin() << endl;
+
+        voidfraction_.reset
+        (
+            new volScalarField
+            (
+                IOobject
+                (
+                    "voidfraction",
+                    mesh_.time().timeName(),
+                    mesh_,
+                    IOobject::NO_READ,
+                    IOobject::AUTO_WRITE
+                ),
+                mesh_,
+                dimensionedScalar("one", dimless, 1.0),
+                zeroGradientFvPatchScalarField::typeName
+            )
+        );
+        voidfraction_->oldTime();
+        Kexchange_.reset
+        (
+            new volScalarField
+            (
+                IOobject("Kexchange", mesh_.time().timeName(), mesh_),
+                mesh_,
+                dimensionedScalar("zero", dimless/dimTime, 0.0),
+                zeroGradientFvPatchScalarField::typeName
+            )
+        );
+        Fexchange_.reset
+        (
+            new volVectorField
+            (
+                IOobject("Fexchange", mesh_.time().timeName(), mesh_),
+                mesh_,
+                dimensionedVector("zero", dimAcceleration, Zero),
+                zeroGradientFvPatchVectorField::typeName
+            )
+        );
+    }
 
     Info<< "Coupling: fluid rho " << props_.rhoFluid() << " kg/m^3, mu "
         << props_.muFluid() << " Pa s; particles d "
@@ -317,6 +575,13 @@ Foam::demCoupling::demCoupling
     try
     {
         startDEM();
+        gatherRecords();
+        if (props_.twoWay())
+        {
+            // The start is no step: no impulse to exchange yet
+            Fexchange_() == dimensionedVector("zero", dimAcceleration, Zero);
+        }
+        updateForces();
     }
     catch (const std::exception& e)
     {
@@ -332,20 +597,84 @@ Foam::demCoupling::~demCoupling()
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * //
 
-void Foam::demCoupling::evolve()
+void Foam::demCoupling::updateForces()
 {
     try
     {
         clockTime clock;
 
-        countNewParticles();
+        UInterp_.update();
 
-        pointField position;
-        vectorField Uf;
-        labelList proc, cell;
-        scalarField wallDist;
-        locateLocal(false, position, Uf, proc, cell, wallDist);
+        tmp<volVectorField> tgradp;
+        for (const forceModel& model : forces_)
+        {
+            if (model.needsPressureGradient() && !tgradp.valid())
+            {
+                tgradp = props_.rhoFluid()*fvc::grad(*p_);
+            }
+        }
 
+        const scalar rho = props_.rhoFluid();
+        const scalar mu = props_.muFluid();
+        const vector& g = g_.value();
+
+        // Context of a particle; eps = 1, U = 0, no grad(p) outside the
+        // fluid or without two-way coupling
+        auto context = [&](const scalar radius, const scalar mass,
+            const vector& v, const label celli, const point& x)
+        {
+            particleContext c;
+            c.d = 2*radius;
+            c.volume = 4.0/3.0*constant::mathematical::pi*pow3(radius);
+            c.mass = mass;
+            c.v = v;
+            c.U = (celli >= 0) ? UInterp_.interpolate(x, celli) : vector::zero;
+            c.gradp =
+                (celli >= 0 && tgradp.valid()) ? tgradp()[celli] : vector::zero;
+            c.eps =
+                (celli >= 0 && voidfraction_.valid())
+              ? voidfraction_()[celli] : 1.0;
+            c.rho = rho;
+            c.mu = mu;
+            c.g = g;
+            c.cell = celli;
+            return c;
+        };
+
+        auto explicitForce = [&](const particleContext& c)
+        {
+            vector F = Zero;
+            for (const forceModel& model : forces_)
+            {
+                F += model.force(c);
+            }
+            return F;
+        };
+
+        // On the owning ranks: the records
+        const label nRec = records_.position.size();
+        scalarList recK(nRec);
+        List<vector> recU(nRec), recF(nRec);
+        scalar tauMin = GREAT;
+        for (label k = 0; k < nRec; ++k)
+        {
+            const particleContext c = context
+            (
+                records_.radius[k], records_.mass[k], records_.velocity[k],
+                records_.cell[k], records_.position[k]
+            );
+            scalar K = drag_->K(c);
+            if (props_.modelB())
+            {
+                K /= c.eps;
+            }
+            tauMin = min(tauMin, c.mass/K);
+            recK[k] = K;
+            recU[k] = c.U;
+            recF[k] = explicitForce(c);
+        }
+
+        // Back on the particles' ranks
         liggghtsEngine& dem = engine_();
         const int n = dem.nLocal();
         double** v = dem.v();
@@ -354,47 +683,36 @@ void Foam::demCoupling::evolve()
         double* Ksl = dem.scalarProperty("Ksl");
         double** uf = dem.vectorProperty("uf");
         double** fExplicit = dem.vectorProperty("dragforce");
+        double** x0 = dem.vectorProperty("colloidX0");
 
-        const vector& g = g_.value();
-        const scalar rhoF = props_.rhoFluid();
+        scalarList K(n, 0.0);
+        List<vector> Up(n, Zero), F(n, Zero);
+        records_.answer(recK, K);
+        records_.answer(recU, Up);
+        records_.answer(recF, F);
 
         label nOutside = 0;
-        scalar tauMin = GREAT;
-
         for (int i = 0; i < n; ++i)
         {
-            const scalar radius = demUnits::length*r[i];
-            const scalar mass = demUnits::mass*m[i];
-            const scalar volume =
-                4.0/3.0*constant::mathematical::pi*pow3(radius);
-
-            // Gravity and buoyancy: explicit, constant over the interval
-            const vector fBody = (mass - rhoF*volume)*g;
-            for (direction k = 0; k < 3; ++k)
+            if (proc_[i] < 0)
             {
-                fExplicit[i][k] = fBody[k]/demUnits::force;
-            }
-
-            if (cell[i] < 0)
-            {
+                // Outside the fluid: no drag, the body forces only
                 ++nOutside;
-                Ksl[i] = 0;
-                uf[i][0] = uf[i][1] = uf[i][2] = 0;
-                continue;
+                const particleContext c = context
+                (
+                    demUnits::length*r[i], demUnits::mass*m[i],
+                    demUnits::velocity*vector(v[i][0], v[i][1], v[i][2]),
+                    -1, point::zero
+                );
+                F[i] = explicitForce(c);
             }
-
-            const vector vp(v[i][0], v[i][1], v[i][2]);
-            const vector Ui = Uf[i];
-            const scalar K =
-                drag_->K(2*radius, mag(Ui - demUnits::velocity*vp));
-
-            tauMin = min(tauMin, mass/K);
-
-            Ksl[i] = K/demUnits::dragCoeff;
+            Ksl[i] = K[i]/demUnits::dragCoeff;
             for (direction k = 0; k < 3; ++k)
             {
-                uf[i][k] = Ui[k]/demUnits::velocity;
+                uf[i][k] = Up[i][k]/demUnits::velocity;
+                fExplicit[i][k] = F[i][k]/demUnits::force;
             }
+            dem.unwrapped(i, x0[i]);
         }
 
         reduce(tauMin, minOp<scalar>());
@@ -403,19 +721,43 @@ void Foam::demCoupling::evolve()
         // Particles of the script may differ from those of the settings
         checkRelaxationTime(tauMin);
 
-        const label nTotal = returnReduce(label(n), sumOp<label>());
-
-        Info<< "Coupling: " << nTotal
+        Info<< "Coupling: " << returnReduce(label(n), sumOp<label>())
             << " particles, " << nOutside << " outside the fluid, "
             << returnReduce(locator_.nGlobalSearches(), sumOp<label>())
             << " global searches" << endl;
 
         couplingSeconds_ += clock.timeIncrement();
+    }
+    catch (const std::exception& e)
+    {
+        FatalErrorInFunction
+            << "Coupling step failed: " << e.what() << exit(FatalError);
+    }
+}
+
+
+void Foam::demCoupling::evolve()
+{
+    try
+    {
+        clockTime clock;
+
+        liggghtsEngine& dem = engine_();
+        const label nTotal = returnReduce(label(dem.nLocal()), sumOp<label>());
+
+        if (props_.twoWay())
+        {
+            voidfraction_->storeOldTime();
+        }
 
         dem.run(props_.couplingInterval());
 
         demSeconds_ += clock.timeIncrement();
         particleSteps_ += scalar(nTotal)*props_.couplingInterval();
+
+        gatherRecords();
+
+        couplingSeconds_ += clock.timeIncrement();
     }
     catch (const std::exception& e)
     {

@@ -287,6 +287,13 @@ double* Foam::liggghtsEngine::rmass() const
 }
 
 
+void Foam::liggghtsEngine::unwrapped(const int i, double xu[3]) const
+{
+    LAMMPS_NS::Atom* atom = engine(lmp_)->atom;
+    engine(lmp_)->domain->unmap(atom->x[i], atom->image[i], xu);
+}
+
+
 double* Foam::liggghtsEngine::scalarProperty(const std::string& fixId) const
 {
     LAMMPS_NS::Fix* f = findFix(lmp_, fixId);

@@ -46,8 +46,15 @@ Foam::particleLocator::particleLocator(const polyMesh& mesh)
 }
 
 
-Foam::label Foam::particleLocator::walk(const point& p, label celli) const
+Foam::label Foam::particleLocator::walk
+(
+    const point& p,
+    label celli,
+    label& lastCell,
+    label& exitFace
+) const
 {
+    exitFace = -1;
     const cellList& cells = mesh_.cells();
     const labelList& own = mesh_.faceOwner();
     const labelList& nei = mesh_.faceNeighbour();
@@ -56,8 +63,10 @@ Foam::label Foam::particleLocator::walk(const point& p, label celli) const
 
     for (label step = 0; step < maxWalkSteps_; ++step)
     {
+        lastCell = celli;
+
         // Face whose plane p lies furthest outside of
-        label exitFace = -1;
+        exitFace = -1;
         scalar exitDist = 0;
         for (const label facei : cells[celli])
         {
@@ -89,17 +98,51 @@ Foam::label Foam::particleLocator::walk(const point& p, label celli) const
                     }
                 }
             }
+            // Not in a face neighbour of this mesh part: report the
+            // boundary face whose plane is nearest (e.g. a processor face:
+            // the neighbour rank continues from the cell behind it)
+            scalar nearest = -GREAT;
+            for (const label facei : cells[celli])
+            {
+                if (!mesh_.isInternalFace(facei))
+                {
+                    const scalar sign = (own[facei] == celli) ? 1 : -1;
+                    const scalar d =
+                        sign*((p - Cf[facei]) & Sf[facei])/mag(Sf[facei]);
+                    if (d > nearest)
+                    {
+                        nearest = d;
+                        exitFace = facei;
+                    }
+                }
+            }
             return -1;
+        }
+
+        // Slightly outside a face plane: a concave (polyhedral) cell may
+        // still hold p.  Test before stepping, or the walk can oscillate
+        // between such a cell and its neighbour.
+        if
+        (
+            exitDist < concaveTolerance_*cbrt(mesh_.cellVolumes()[celli])
+         && mesh_.pointInCell(p, celli, polyMesh::CELL_TETS)
+        )
+        {
+            exitFace = -1;
+            return celli;
         }
 
         if (!mesh_.isInternalFace(exitFace))
         {
+            // Left this mesh part through a boundary face
             return -1;
         }
 
         celli = (own[exitFace] == celli) ? nei[exitFace] : own[exitFace];
     }
 
+    // Did not settle: gave up inside the mesh
+    exitFace = -1;
     return -1;
 }
 
@@ -112,7 +155,8 @@ Foam::label Foam::particleLocator::findCell
 {
     if (previousCell >= 0 && previousCell < mesh_.nCells())
     {
-        const label celli = walk(p, previousCell);
+        label lastCell, exitFace;
+        const label celli = walk(p, previousCell, lastCell, exitFace);
         if (celli >= 0)
         {
             return celli;
@@ -121,6 +165,18 @@ Foam::label Foam::particleLocator::findCell
 
     ++nGlobalSearches_;
     return search_.findCell(p, -1, true);
+}
+
+
+Foam::label Foam::particleLocator::walkFrom
+(
+    const point& p,
+    const label celli,
+    label& lastCell,
+    label& exitFace
+) const
+{
+    return walk(p, celli, lastCell, exitFace);
 }
 
 

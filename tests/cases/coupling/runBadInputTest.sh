@@ -61,26 +61,4 @@ case $variant in
     *)  echo "unknown variant $variant"; exit 2 ;;
 esac
 
-before=$(ls | grep -v '^log\.')
-set +e
-colloidDEMFoam > log.colloidDEMFoam 2>&1
-rc=$?
-set -e
-
-status=0
-if [ $rc -eq 0 ]
-then
-    echo "FAIL: exit status 0 for bad input ($variant)"; status=1
-fi
-if ! grep -E -q "$expect" log.colloidDEMFoam
-then
-    echo "FAIL: no message matching: $expect"; status=1
-fi
-if [ "$(ls | grep -v '^log\.')" != "$before" ]
-then
-    echo "FAIL: files written: $(ls)"; status=1
-fi
-grep -E -m1 "$expect" log.colloidDEMFoam || true
-echo "exit status $rc"
-[ $status -eq 0 ] && echo PASS
-exit $status
+source "$here/../common/expectBadInput.sh"

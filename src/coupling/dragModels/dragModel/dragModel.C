@@ -9,17 +9,7 @@ namespace Foam
 }
 
 
-Foam::dragModel::dragModel(const dictionary&, const scalar mu)
-:
-    mu_(mu)
-{}
-
-
-Foam::autoPtr<Foam::dragModel> Foam::dragModel::New
-(
-    const dictionary& dict,
-    const scalar mu
-)
+Foam::autoPtr<Foam::dragModel> Foam::dragModel::New(const dictionary& dict)
 {
     if (!dict.found("dragModel"))
     {
@@ -46,16 +36,5 @@ Foam::autoPtr<Foam::dragModel> Foam::dragModel::New
 
     Info<< "Drag model: " << modelType << endl;
 
-    // Kernels of src/colloidModels check their parameters and throw
-    try
-    {
-        return cstrIter()(dict, mu);
-    }
-    catch (const std::exception& e)
-    {
-        FatalIOErrorInFunction(dict)
-            << "dragModel '" << modelType << "' (" << dict.name() << "): "
-            << e.what() << exit(FatalIOError);
-    }
-    return nullptr;
+    return cstrIter()(dict.subOrEmptyDict(modelType + "Coeffs"));
 }

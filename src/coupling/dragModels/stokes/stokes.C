@@ -1,4 +1,5 @@
 #include "stokes.H"
+#include "colloidModels/stokesDrag.H"
 #include "addToRunTimeSelectionTable.H"
 
 namespace Foam
@@ -11,27 +12,15 @@ namespace dragModels
 }
 
 
-namespace
-{
-    // OpenFOAM v1912 compiles as C++11: no aggregate initialisation of a
-    // struct with default member values
-    colloid::StokesDragParameters lawParameters(const Foam::scalar mu)
-    {
-        colloid::StokesDragParameters p;
-        p.viscosity = mu;
-        return p;
-    }
-}
-
-
-Foam::dragModels::stokes::stokes(const dictionary& dict, const scalar mu)
-:
-    dragModel(dict, mu),
-    law_(lawParameters(mu))
+Foam::dragModels::stokes::stokes(const dictionary&)
 {}
 
 
-Foam::scalar Foam::dragModels::stokes::K(const scalar d, const scalar) const
+Foam::scalar Foam::dragModels::stokes::K(const particleContext& p) const
 {
-    return law_.coefficient(d);
+    // OpenFOAM v1912 compiles as C++11: no aggregate initialisation of a
+    // struct with default member values
+    colloid::StokesDragParameters law;
+    law.viscosity = p.mu;
+    return colloid::StokesDrag(law).coefficient(p.d);
 }

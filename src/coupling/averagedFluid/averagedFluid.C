@@ -1,0 +1,149 @@
+#include "averagedFluid.H"
+#include "fvCFD.H"
+#include "constrainHbyA.H"
+
+Foam::averagedFluid::averagedFluid
+(
+    fvMesh& mesh,
+    volVectorField& U,
+    volScalarField& p,
+    const demCoupling& coupling
+)
+:
+    mesh_(U.mesh()),
+    coupling_(coupling),
+    U_(U),
+    p_(p),
+    pimple_(mesh),
+    phi_
+    (
+        IOobject
+        (
+            "phi",
+            U.mesh().time().timeName(),
+            U.mesh(),
+            IOobject::READ_IF_PRESENT,
+            IOobject::AUTO_WRITE
+        ),
+        fvc::flux(coupling.voidfraction()*U)
+    ),
+    pRefCell_(0),
+    pRefValue_(0),
+    nu_("nu", dimViscosity, coupling.nu())
+{
+    setRefCell(p_, pimple_.dict(), pRefCell_, pRefValue_);
+    mesh_.setFluxRequired(p_.name());
+}
+
+
+Foam::tmp<Foam::volVectorField> Foam::averagedFluid::pressureTerm() const
+{
+    if (coupling_.modelB())
+    {
+        return -fvc::grad(p_);
+    }
+    return -coupling_.voidfraction()*fvc::grad(p_);
+}
+
+
+Foam::tmp<Foam::volVectorField> Foam::averagedFluid::exchangeSource() const
+{
+    return coupling_.Fexchange() + coupling_.Kexchange()*U_.oldTime();
+}
+
+
+Foam::tmp<Foam::fvVectorMatrix> Foam::averagedFluid::momentum()
+{
+    const volScalarField& eps = coupling_.voidfraction();
+
+    tmp<fvVectorMatrix> tUEqn
+    (
+        fvm::ddt(eps, U_)
+      + fvm::div(phi_, U_)
+      - fvm::laplacian(eps*nu_, U_)
+      - fvc::div(eps*nu_*dev2(T(fvc::grad(U_))))
+      + fvm::Sp(coupling_.Kexchange(), U_)
+    );
+    fvVectorMatrix& UEqn = tUEqn.ref();
+
+    UEqn.relax();
+
+    if (pimple_.momentumPredictor())
+    {
+        Foam::solve(UEqn == exchangeSource() + pressureTerm());
+    }
+    return tUEqn;
+}
+
+
+void Foam::averagedFluid::correctPressure(fvVectorMatrix& UEqn)
+{
+    const volScalarField& eps = coupling_.voidfraction();
+    const surfaceScalarField epsf(fvc::interpolate(eps));
+
+    const volScalarField rAU(1.0/UEqn.A());
+    const surfaceScalarField rAUf(fvc::interpolate(rAU));
+    const volVectorField HbyA(constrainHbyA(rAU*UEqn.H(), U_, p_));
+
+    // The exchange source enters the flux at the faces, like buoyancy in
+    // OpenFOAM's buoyant solvers: a source that jumps between cells (the
+    // edge of a bed) is then balanced by the pressure gradient face by
+    // face, with no checkerboard in p or U
+    // eps U = eps (HbyA + rAU S) - Dp grad p
+    const surfaceScalarField phiHbyA
+    (
+        "phiHbyA",
+        epsf*(fvc::flux(HbyA) + rAUf*fvc::flux(exchangeSource()))
+        // Rhie-Chow's time-step correction (as in OpenFOAM's compressible
+        // solvers, with eps in place of rho): without it the cell
+        // velocities decouple from the fluxes at small time steps
+      + fvc::interpolate(eps*rAU)*fvc::ddtCorr(eps, U_, phi_)
+    );
+    const surfaceScalarField Dp
+    (
+        "Dp",
+        coupling_.modelB() ? rAUf*epsf : rAUf*sqr(epsf)
+    );
+
+    while (pimple_.correctNonOrthogonal())
+    {
+        fvScalarMatrix pEqn
+        (
+            fvm::laplacian(Dp, p_) == fvc::div(phiHbyA) + fvc::ddt(eps)
+        );
+        pEqn.setReference(pRefCell_, pRefValue_);
+        pEqn.solve(mesh_.solver(p_.select(pimple_.finalInnerIter())));
+
+        if (pimple_.finalNonOrthogonalIter())
+        {
+            phi_ = phiHbyA - pEqn.flux();
+
+            // Cell velocity from the fluxes
+            U_ = fvc::reconstruct(phi_/epsf);
+            U_.correctBoundaryConditions();
+        }
+    }
+
+    // Continuity of the fluid phase
+    const volScalarField contErr(fvc::ddt(eps) + fvc::div(phi_));
+    Info<< "time step continuity errors : sum local = "
+        << mesh_.time().deltaTValue()
+          *mag(contErr)().weightedAverage(mesh_.V()).value()
+        << endl;
+
+    p_.relax();
+}
+
+
+void Foam::averagedFluid::solve()
+{
+    while (pimple_.loop())
+    {
+        tmp<fvVectorMatrix> tUEqn(momentum());
+
+        while (pimple_.correct())
+        {
+            correctPressure(tUEqn.ref());
+        }
+    }
+}

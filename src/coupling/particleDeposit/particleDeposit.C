@@ -1,0 +1,290 @@
+#include "particleDeposit.H"
+#include "processorPolyPatch.H"
+#include "processorCyclicPolyPatch.H"
+#include "PstreamBuffers.H"
+#include "mathematicalConstants.H"
+
+Foam::particleDeposit::particleDeposit
+(
+    const fvMesh& mesh,
+    const particleLocator& locator
+)
+:
+    mesh_(mesh),
+    locator_(locator),
+    satellites_(nShells_*nDirections_),
+    procPatchOfNeighbour_(Pstream::nProcs(), -1)
+{
+    // Equal-volume shells: the point of shell k at the radius that halves
+    // the shell's volume; directions on a Fibonacci lattice (equal areas)
+    const scalar golden = constant::mathematical::pi*(3 - sqrt(5.0));
+    label k = 0;
+    for (label shell = 0; shell < nShells_; ++shell)
+    {
+        const scalar radius = cbrt((shell + 0.5)/nShells_);
+        for (label j = 0; j < nDirections_; ++j)
+        {
+            const scalar z = 1 - (2*j + 1.0)/nDirections_;
+            const scalar rho = sqrt(max(0.0, 1 - z*z));
+            const scalar phi = golden*(j + shell*nDirections_);
+            satellites_[k++] =
+                radius*vector(rho*cos(phi), rho*sin(phi), z);
+        }
+    }
+
+    for (const polyPatch& pp : mesh_.boundaryMesh())
+    {
+        if
+        (
+            isA<processorPolyPatch>(pp)
+         && !isA<processorCyclicPolyPatch>(pp)
+        )
+        {
+            procPatchOfNeighbour_
+            [
+                refCast<const processorPolyPatch>(pp).neighbProcNo()
+            ] = pp.index();
+        }
+    }
+}
+
+
+bool Foam::particleDeposit::insideCell
+(
+    const point& x,
+    const scalar r,
+    const label celli
+) const
+{
+    const labelList& own = mesh_.faceOwner();
+    const vectorField& Sf = mesh_.faceAreas();
+    const vectorField& Cf = mesh_.faceCentres();
+
+    for (const label facei : mesh_.cells()[celli])
+    {
+        const scalar sign = (own[facei] == celli) ? 1 : -1;
+        // Distance of x inside the face plane
+        if (-sign*((x - Cf[facei]) & Sf[facei]) < r*mag(Sf[facei]))
+        {
+            return false;
+        }
+    }
+    return true;
+}
+
+
+Foam::Ostream& Foam::operator<<(Ostream& os, const depositShare& t)
+{
+    os  << t.p << token::SPACE << t.volume << token::SPACE << t.dragCoeff
+        << token::SPACE << t.force << token::SPACE << t.originProc
+        << token::SPACE << t.originCell << token::SPACE << t.face;
+    return os;
+}
+
+
+Foam::Istream& Foam::operator>>(Istream& is, depositShare& t)
+{
+    is  >> t.p >> t.volume >> t.dragCoeff >> t.force >> t.originProc
+        >> t.originCell >> t.face;
+    return is;
+}
+
+
+void Foam::particleDeposit::add
+(
+    const depositShare& t,
+    const label celli,
+    scalarField& solidVolume,
+    scalarField& dragCoeff,
+    vectorField& dragForce
+)
+{
+    solidVolume[celli] += t.volume;
+    dragCoeff[celli] += t.dragCoeff;
+    dragForce[celli] += t.force;
+}
+
+
+void Foam::particleDeposit::depositPoint
+(
+    const depositShare& t,
+    const label celli,
+    scalarField& solidVolume,
+    scalarField& dragCoeff,
+    vectorField& dragForce,
+    List<DynamicList<depositShare>>& toProc,
+    List<DynamicList<depositShare>>& toOrigin
+) const
+{
+    label lastCell = celli;
+    label exitFace = -1;
+    label target = locator_.walkFrom(t.p, celli, lastCell, exitFace);
+
+    if (target < 0 && exitFace >= 0)
+    {
+        const label patchi = mesh_.boundaryMesh().whichPatch(exitFace);
+        const polyPatch& pp = mesh_.boundaryMesh()[patchi];
+        if (isA<processorPolyPatch>(pp) && !isA<processorCyclicPolyPatch>(pp))
+        {
+            depositShare next(t);
+            next.face = exitFace - pp.start();
+            toProc[refCast<const processorPolyPatch>(pp).neighbProcNo()]
+                .append(next);
+            return;
+        }
+    }
+    if (target < 0)
+    {
+        // The walk did not settle or left through a wall, inlet or
+        // outlet face (concave cells and boundaries of polyhedral meshes):
+        // search this mesh part
+        target = locator_.findCell(t.p, -1);
+    }
+    if (target >= 0)
+    {
+        add(t, target, solidVolume, dragCoeff, dragForce);
+    }
+    else if (t.originProc == Pstream::myProcNo())
+    {
+        // Outside the fluid: the particle's own cell keeps the volume
+        add(t, t.originCell, solidVolume, dragCoeff, dragForce);
+    }
+    else
+    {
+        toOrigin[t.originProc].append(t);
+    }
+}
+
+
+void Foam::particleDeposit::deposit
+(
+    const pointField& x,
+    const labelList& cell,
+    const scalarField& r,
+    const scalarField& K,
+    const vectorField& F,
+    scalarField& solidVolume,
+    scalarField& dragCoeff,
+    vectorField& dragForce
+) const
+{
+    const label nProcs = Pstream::nProcs();
+    const label me = Pstream::myProcNo();
+    const scalar share = 1.0/satellites_.size();
+
+    List<DynamicList<depositShare>> toProc(nProcs);
+    List<DynamicList<depositShare>> toOrigin(nProcs);
+
+    forAll(x, i)
+    {
+        const scalar vol = 4.0/3.0*constant::mathematical::pi*pow3(r[i]);
+        const label celli = cell[i];
+
+        depositShare t{x[i], vol, K[i], F[i], me, celli, -1};
+
+        if (insideCell(x[i], r[i], celli))
+        {
+            add(t, celli, solidVolume, dragCoeff, dragForce);
+            continue;
+        }
+
+        t.volume *= share;
+        t.dragCoeff *= share;
+        t.force *= share;
+        for (const vector& s : satellites_)
+        {
+            t.p = x[i] + r[i]*s;
+            depositPoint
+            (
+                t, celli, solidVolume, dragCoeff, dragForce, toProc, toOrigin
+            );
+        }
+    }
+
+    if (!Pstream::parRun())
+    {
+        return;
+    }
+
+    // Points that left through processor patches: continue the walk on the
+    // neighbour from the cell behind the same face.  A point may cross more
+    // than one processor boundary: repeat until none is in transit.
+    const label maxRounds = 10;
+    for (label round = 0; round < maxRounds; ++round)
+    {
+        label nInTransit = 0;
+        forAll(toProc, proci)
+        {
+            nInTransit += toProc[proci].size();
+        }
+        if (!returnReduce(nInTransit, sumOp<label>()))
+        {
+            break;
+        }
+
+        PstreamBuffers buffers(Pstream::commsTypes::nonBlocking);
+        for (label proci = 0; proci < nProcs; ++proci)
+        {
+            if (toProc[proci].size())
+            {
+                UOPstream os(proci, buffers);
+                os << toProc[proci];
+                toProc[proci].clear();
+            }
+        }
+        labelList sizes;
+        buffers.finishedSends(sizes);
+
+        for (label proci = 0; proci < nProcs; ++proci)
+        {
+            if (!sizes[proci])
+            {
+                continue;
+            }
+            UIPstream is(proci, buffers);
+            const List<depositShare> arrived(is);
+
+            const polyPatch& pp =
+                mesh_.boundaryMesh()[procPatchOfNeighbour_[proci]];
+            for (const depositShare& t : arrived)
+            {
+                const label start = pp.faceCells()[t.face];
+                if (round == maxRounds - 1)
+                {
+                    // Give up walking: the cell behind the face
+                    add(t, start, solidVolume, dragCoeff, dragForce);
+                    continue;
+                }
+                depositPoint
+                (
+                    t, start, solidVolume, dragCoeff, dragForce,
+                    toProc, toOrigin
+                );
+            }
+        }
+    }
+
+    // Shares outside the fluid, back to their particles' cells
+    PstreamBuffers buffers(Pstream::commsTypes::nonBlocking);
+    for (label proci = 0; proci < nProcs; ++proci)
+    {
+        if (toOrigin[proci].size())
+        {
+            UOPstream os(proci, buffers);
+            os << toOrigin[proci];
+        }
+    }
+    labelList sizes;
+    buffers.finishedSends(sizes);
+    for (label proci = 0; proci < nProcs; ++proci)
+    {
+        if (sizes[proci])
+        {
+            UIPstream is(proci, buffers);
+            for (const depositShare& t : List<depositShare>(is))
+            {
+                add(t, t.originCell, solidVolume, dragCoeff, dragForce);
+            }
+        }
+    }
+}

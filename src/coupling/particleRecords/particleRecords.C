@@ -1,0 +1,127 @@
+#include "particleRecords.H"
+#include "PstreamBuffers.H"
+#include "DynamicList.H"
+
+namespace
+{
+
+// Elements idx of a list
+template<class Type>
+Foam::List<Type> pick(const Foam::UList<Type>& all, const Foam::labelList& idx)
+{
+    Foam::List<Type> out(idx.size());
+    forAll(idx, k)
+    {
+        out[k] = all[idx[k]];
+    }
+    return out;
+}
+
+} // End anonymous namespace
+
+
+void Foam::particleRecords::gather
+(
+    const labelList& proc,
+    const labelList& cellOnProc,
+    const pointField& localPosition,
+    const scalarField& localRadius,
+    const scalarField& localMass,
+    const vectorField& localVelocity,
+    const scalarField& localDragCoeff,
+    const vectorField& localDragForce
+)
+{
+    const label nProcs = Pstream::nProcs();
+
+    List<DynamicList<label>> toProc(nProcs);
+    forAll(proc, i)
+    {
+        if (proc[i] >= 0)
+        {
+            toProc[proc[i]].append(i);
+        }
+    }
+    sentIndex_.setSize(nProcs);
+    forAll(toProc, proci)
+    {
+        sentIndex_[proci].transfer(toProc[proci]);
+    }
+    nFrom_.setSize(nProcs);
+    nFrom_ = 0;
+
+    // One block of records per source rank, concatenated in rank order
+    List<pointField> p(nProcs);
+    List<labelList> c(nProcs);
+    List<scalarField> r(nProcs), m(nProcs), K(nProcs);
+    List<vectorField> v(nProcs), F(nProcs);
+
+    if (!Pstream::parRun())
+    {
+        const labelList& idx = sentIndex_[0];
+        p[0] = pick(localPosition, idx);
+        c[0] = pick(cellOnProc, idx);
+        r[0] = pick(localRadius, idx);
+        m[0] = pick(localMass, idx);
+        v[0] = pick(localVelocity, idx);
+        K[0] = pick(localDragCoeff, idx);
+        F[0] = pick(localDragForce, idx);
+    }
+    else
+    {
+        PstreamBuffers buffers(Pstream::commsTypes::nonBlocking);
+        for (label proci = 0; proci < nProcs; ++proci)
+        {
+            const labelList& idx = sentIndex_[proci];
+            if (idx.size())
+            {
+                UOPstream os(proci, buffers);
+                os  << pick(localPosition, idx) << pick(cellOnProc, idx)
+                    << pick(localRadius, idx) << pick(localMass, idx)
+                    << pick(localVelocity, idx) << pick(localDragCoeff, idx)
+                    << pick(localDragForce, idx);
+            }
+        }
+        labelList sizes;
+        buffers.finishedSends(sizes);
+        for (label proci = 0; proci < nProcs; ++proci)
+        {
+            if (sizes[proci])
+            {
+                UIPstream is(proci, buffers);
+                is >> p[proci] >> c[proci] >> r[proci] >> m[proci]
+                   >> v[proci] >> K[proci] >> F[proci];
+            }
+        }
+    }
+
+    label n = 0;
+    forAll(p, proci)
+    {
+        nFrom_[proci] = p[proci].size();
+        n += nFrom_[proci];
+    }
+    position.setSize(n);
+    cell.setSize(n);
+    radius.setSize(n);
+    mass.setSize(n);
+    velocity.setSize(n);
+    dragCoeff.setSize(n);
+    dragForce.setSize(n);
+
+    label k = 0;
+    forAll(p, proci)
+    {
+        forAll(p[proci], j)
+        {
+            position[k] = p[proci][j];
+            cell[k] = c[proci][j];
+            radius[k] = r[proci][j];
+            mass[k] = m[proci][j];
+            velocity[k] = v[proci][j];
+            dragCoeff[k] = K[proci][j];
+            dragForce[k] = F[proci][j];
+            ++k;
+        }
+    }
+}

@@ -1,0 +1,85 @@
+# Two-way coupling (colloidDEMFoam, couplingMode twoWay; label twoWay).
+# Cases are built in the build tree at test time.
+#
+# twoWay.pack: a random packed bed (2300 spheres of 100 um, eps ~ 0.39)
+#   poured by the stock liggghts (twoWay/in.pack); the fixture of the rest.
+# twoWay.ergun.<A|B>.Us<Us>: upward flow through the bed held still, one
+#   cell across: the pressure drop across the bed's interior within 3 % of
+#   Ergun's equation on the layers' exact porosities (sphere-slab
+#   volumes), at superficial velocities giving Re_p = 0.01 ... 10, for
+#   Model A and Model B; the solid volume equals the particles' at every
+#   step to 1e-12.
+# twoWay.ergun.parallel: Model A at Re_p = 1 on 2 ranks (METIS): the same
+#   pressure drop as the serial run within 0.1 %.
+# twoWay.fluidFraction.<mesh>[.parallel]: the bed on hex, tet and
+#   polyhedral meshes of 2.5-diameter cells: eps in [epsilonMin, 1], solid
+#   volume = particles' volume to 1e-12; on 2 ranks (METIS) the field
+#   equals the serial one (hex, tet: to 1e-10; polyhedral: at most 1e-3 of
+#   the solid volume in other cells).
+
+set(twoWayDir ${CMAKE_CURRENT_SOURCE_DIR}/twoWay)
+set(twoWayWork ${CMAKE_CURRENT_BINARY_DIR}/twoWay)
+
+add_test(NAME case.twoWay.pack
+    COMMAND ${twoWayDir}/makePack.sh ${twoWayWork}/pack)
+set_tests_properties(case.twoWay.pack PROPERTIES
+    TIMEOUT 300 LABELS "case;twoWay" FIXTURES_SETUP twoWayPack)
+
+foreach(model A B)
+    foreach(Us 1e-4 1e-3 1e-2 3e-2 1e-1)
+        set(name case.twoWay.ergun.${model}.Us${Us})
+        add_test(NAME ${name}
+            COMMAND ${twoWayDir}/runPackedBedTest.sh ${model} ${Us}
+                    ${twoWayWork}/pack ${twoWayWork}/ergun_${model}_${Us})
+        set_tests_properties(${name} PROPERTIES
+            TIMEOUT 120 LABELS "case;twoWay" FIXTURES_REQUIRED twoWayPack
+            ENVIRONMENT PYTHONDONTWRITEBYTECODE=1)
+    endforeach()
+endforeach()
+set_tests_properties(case.twoWay.ergun.A.Us1e-2 PROPERTIES
+    FIXTURES_SETUP twoWayErgunSerial)
+
+add_test(NAME case.twoWay.ergun.parallel
+    COMMAND ${twoWayDir}/runPackedBedTest.sh A 1e-2 ${twoWayWork}/pack
+            ${twoWayWork}/ergun_A_1e-2_parallel 2 ${twoWayWork}/ergun_A_1e-2)
+set_tests_properties(case.twoWay.ergun.parallel PROPERTIES
+    TIMEOUT 180 LABELS "case;twoWay" PROCESSORS 2
+    FIXTURES_REQUIRED "twoWayPack;twoWayErgunSerial"
+    ENVIRONMENT PYTHONDONTWRITEBYTECODE=1)
+
+foreach(mesh hex tet polyDual)
+    set(name case.twoWay.fluidFraction.${mesh})
+    add_test(NAME ${name}
+        COMMAND ${twoWayDir}/runFluidFractionTest.sh ${mesh}
+                ${twoWayWork}/pack ${twoWayWork}/fraction_${mesh})
+    set_tests_properties(${name} PROPERTIES
+        TIMEOUT 120 LABELS "case;twoWay" FIXTURES_REQUIRED twoWayPack
+        FIXTURES_SETUP twoWayFraction_${mesh}
+        ENVIRONMENT PYTHONDONTWRITEBYTECODE=1)
+
+    if(mesh STREQUAL polyDual)
+        set(moved 1e-3)
+    else()
+        set(moved "")
+    endif()
+    add_test(NAME ${name}.parallel
+        COMMAND ${twoWayDir}/runFluidFractionTest.sh ${mesh}
+                ${twoWayWork}/pack ${twoWayWork}/fraction_${mesh}_parallel 2
+                ${twoWayWork}/fraction_${mesh} ${moved})
+    set_tests_properties(${name}.parallel PROPERTIES
+        TIMEOUT 180 LABELS "case;twoWay" PROCESSORS 2
+        FIXTURES_REQUIRED "twoWayPack;twoWayFraction_${mesh}"
+        ENVIRONMENT PYTHONDONTWRITEBYTECODE=1)
+endforeach()
+
+# twoWay.badInput.*: bad two-way settings stop the solver before anything
+#   is written, naming file, keyword and what is allowed.
+foreach(variant unknownForceModel unknownDragModel epsilonMinZero epsilonMinOne
+                unknownModelType subCycles steadyState noPIMPLE
+                modelBPressureGradient)
+    add_test(NAME case.twoWay.badInput.${variant}
+        COMMAND ${twoWayDir}/runBadInputTest.sh ${variant} ${twoWayWork}/pack
+                ${twoWayWork}/badInput_${variant})
+    set_tests_properties(case.twoWay.badInput.${variant} PROPERTIES
+        TIMEOUT 60 LABELS "case;twoWay" FIXTURES_REQUIRED twoWayPack)
+endforeach()

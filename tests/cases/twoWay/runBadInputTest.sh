@@ -1,0 +1,52 @@
+#!/bin/bash
+# Bad two-way settings must stop colloidDEMFoam before anything is written,
+# with a non-zero exit and a message naming the file, the keyword and what
+# is allowed.
+#
+# usage: runBadInputTest.sh variant packDir workDir
+#   variants: unknownForceModel unknownDragModel epsilonMinZero
+#             epsilonMinOne unknownModelType subCycles steadyState noPIMPLE
+#             modelBPressureGradient
+set -e
+variant=$1
+pack=$2
+work=$3
+here=$(cd "$(dirname "$0")" && pwd)
+source "$here/prepareCase.sh"
+cp -r 0.orig 0
+blockMesh > log.blockMesh 2>&1
+
+props=constant/couplingProperties
+case $variant in
+    unknownForceModel)
+        foamDictionary $props -entry forceModels -set "(gravityBuoyancy lift)" > /dev/null
+        expect="Unknown force model 'lift' \(keyword 'forceModels' in .*couplingProperties\"?\)" ;;
+    unknownDragModel)
+        foamDictionary $props -entry dragModel -set ergun > /dev/null
+        expect="Unknown dragModel 'ergun' \(keyword 'dragModel' in .*couplingProperties\"?\)" ;;
+    epsilonMinZero)
+        foamDictionary $props -entry twoWay/epsilonMin -set 0 > /dev/null
+        expect="Keyword 'epsilonMin' in .*couplingProperties.twoWay\"? is 0; allowed range: \(0, 1\)" ;;
+    epsilonMinOne)
+        foamDictionary $props -entry twoWay/epsilonMin -set 1 > /dev/null
+        expect="Keyword 'epsilonMin' in .*couplingProperties.twoWay\"? is 1; allowed range: \(0, 1\)" ;;
+    unknownModelType)
+        foamDictionary $props -entry twoWay/modelType -set C > /dev/null
+        expect="Keyword 'modelType' in .*couplingProperties.twoWay\"? is 'C'; allowed: A .* or B" ;;
+    subCycles)
+        # 10 DEM steps of 1e-6 s do not make a fluid step of 1.5e-5 s
+        foamDictionary system/controlDict -entry deltaT -set 1.5e-05 > /dev/null
+        expect="Keyword 'deltaT' in .*controlDict\"? is 1.5e-05 s but must equal DEM couplingInterval x timeStep = 10 x 1e-06" ;;
+    steadyState)
+        foamDictionary system/fvSchemes -entry ddtSchemes/default -set steadyState > /dev/null
+        expect="couplingMode twoWay solves the fluid in time: keyword 'default' of ddtSchemes in .*fvSchemes.ddtSchemes\"? is 'steadyState'; allowed: Euler, backward, CrankNicolson" ;;
+    noPIMPLE)
+        foamDictionary system/fvSolution -entry PIMPLE -remove > /dev/null
+        expect="couplingMode twoWay needs a 'PIMPLE' dictionary in .*fvSolution" ;;
+    modelBPressureGradient)
+        foamDictionary $props -entry twoWay/modelType -set B > /dev/null
+        expect="Force model 'pressureGradient' \(keyword 'forceModels' in .*couplingProperties\"?\) with modelType B" ;;
+    *)  echo "unknown variant $variant"; exit 2 ;;
+esac
+
+source "$here/../common/expectBadInput.sh"
