@@ -67,7 +67,9 @@ Foam::couplingProperties::couplingProperties(const objectRegistry& obr)
     demScreen_(false),
     twoWay_(false),
     modelB_(false),
-    epsilonMin_(1)
+    epsilonMin_(1),
+    kernelRadius_(0),
+    selfInducedVelocity_(false)
 {
     const dictionary& dict = *this;
 
@@ -114,12 +116,24 @@ Foam::couplingProperties::couplingProperties(const objectRegistry& obr)
                 << " (allowed range: (0, 1))" << exit(FatalIOError);
         }
         epsilonMin_ = tw.get<scalar>("epsilonMin");
-        if (!(epsilonMin_ > 0 && epsilonMin_ < 1))
+
+        kernelRadius_ = tw.getOrDefault<scalar>("kernelRadius", 0);
+        if (kernelRadius_ < 0)
         {
             FatalIOErrorInFunction(tw)
-                << "Keyword 'epsilonMin' in " << tw.name() << " is "
-                << epsilonMin_ << "; allowed range: (0, 1)"
-                << exit(FatalIOError);
+                << "Keyword 'kernelRadius' in " << tw.name() << " is "
+                << kernelRadius_ << "; allowed range: >= 0 [m] (0: the"
+                << " particle's own radius)" << exit(FatalIOError);
+        }
+        selfInducedVelocity_ =
+            tw.getOrDefault<bool>("selfInducedVelocity", false);
+        if (selfInducedVelocity_ && !(kernelRadius_ > 0))
+        {
+            FatalIOErrorInFunction(tw)
+                << "Keyword 'selfInducedVelocity' in " << tw.name()
+                << " is 'yes' but 'kernelRadius' is " << kernelRadius_
+                << ": the correction F/(5 pi mu R) needs a kernel radius R"
+                << " > 0 [m], at least two cell sizes" << exit(FatalIOError);
         }
     }
 

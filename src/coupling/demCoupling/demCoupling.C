@@ -434,7 +434,7 @@ void Foam::demCoupling::depositRecords()
     deposit_.deposit
     (
         records_.position, records_.cell, records_.radius,
-        records_.dragCoeff, records_.dragForce,
+        props_.kernelRadius(), records_.dragCoeff, records_.dragForce,
         solidVolume, Kc, Fc
     );
 
@@ -651,6 +651,23 @@ void Foam::demCoupling::updateForces()
             return F;
         };
 
+        // Kernel averages at the records (two-way with a kernel radius:
+        // the transpose of the deposit), else the interpolated U and the
+        // values of the particle's cell
+        const bool kernelSampling =
+            props_.twoWay() && props_.kernelRadius() > 0;
+        tmp<vectorField> kernelU, kernelGradp;
+        tmp<scalarField> kernelEps;
+        if (kernelSampling)
+        {
+            kernelU = deposit_.sample(UInterp_.field());
+            kernelEps = deposit_.sample(voidfraction_());
+            if (tgradp.valid())
+            {
+                kernelGradp = deposit_.sample(tgradp());
+            }
+        }
+
         // On the owning ranks: the records
         const label nRec = records_.position.size();
         scalarList recK(nRec);
@@ -658,15 +675,46 @@ void Foam::demCoupling::updateForces()
         scalar tauMin = GREAT;
         for (label k = 0; k < nRec; ++k)
         {
-            const particleContext c = context
+            particleContext c = context
             (
                 records_.radius[k], records_.mass[k], records_.velocity[k],
                 records_.cell[k], records_.position[k]
             );
+            if (kernelSampling)
+            {
+                c.U = kernelU()[k];
+                c.eps = kernelEps()[k];
+                if (kernelGradp.valid())
+                {
+                    c.gradp = kernelGradp()[k];
+                }
+            }
             scalar K = drag_->K(c);
             if (props_.modelB())
             {
                 K /= c.eps;
+            }
+            if (props_.selfInducedVelocity())
+            {
+                // The kernel-averaged fluid carries the particle's own
+                // disturbance: the fluid's reaction -F spread over the
+                // ball moves it by u_self = -g F, g = 1/(5 pi mu R).  The
+                // drag on the undisturbed slip, F = K (U - u_self - v),
+                // is F = K/(1 - K g) (U - v)
+                const scalar R = max(0.5*c.d, props_.kernelRadius());
+                const scalar Kg = K/(5*constant::mathematical::pi*mu*R);
+                if (Kg >= 0.5)
+                {
+                    FatalIOErrorInFunction(props_)
+                        << "selfInducedVelocity: the particle's own"
+                        << " disturbance is " << Kg << " of its slip"
+                        << " (kernelRadius " << props_.kernelRadius()
+                        << " m in " << props_.objectPath() << "): the"
+                        << " correction is for dilute particles much"
+                        << " smaller than the kernel; allowed: K/(5 pi mu R)"
+                        << " < 0.5" << exit(FatalIOError);
+                }
+                K /= 1 - Kg;
             }
             tauMin = min(tauMin, c.mass/K);
             recK[k] = K;

@@ -13,7 +13,8 @@ Foam::particleDeposit::particleDeposit
     mesh_(mesh),
     locator_(locator),
     satellites_(nShells_*nDirections_),
-    procPatchOfNeighbour_(Pstream::nProcs(), -1)
+    procPatchOfNeighbour_(Pstream::nProcs(), -1),
+    nRecords_(0)
 {
     // Equal-volume shells: the point of shell k at the radius that halves
     // the shell's volume; directions on a Fibonacci lattice (equal areas)
@@ -75,8 +76,9 @@ bool Foam::particleDeposit::insideCell
 
 Foam::Ostream& Foam::operator<<(Ostream& os, const depositShare& t)
 {
-    os  << t.p << token::SPACE << t.volume << token::SPACE << t.dragCoeff
-        << token::SPACE << t.force << token::SPACE << t.originProc
+    os  << t.p << token::SPACE << t.weight << token::SPACE << t.volume
+        << token::SPACE << t.dragCoeff << token::SPACE << t.force
+        << token::SPACE << t.originProc << token::SPACE << t.originIndex
         << token::SPACE << t.originCell << token::SPACE << t.face;
     return os;
 }
@@ -84,8 +86,8 @@ Foam::Ostream& Foam::operator<<(Ostream& os, const depositShare& t)
 
 Foam::Istream& Foam::operator>>(Istream& is, depositShare& t)
 {
-    is  >> t.p >> t.volume >> t.dragCoeff >> t.force >> t.originProc
-        >> t.originCell >> t.face;
+    is  >> t.p >> t.weight >> t.volume >> t.dragCoeff >> t.force
+        >> t.originProc >> t.originIndex >> t.originCell >> t.face;
     return is;
 }
 
@@ -102,6 +104,11 @@ void Foam::particleDeposit::add
     solidVolume[celli] += t.volume;
     dragCoeff[celli] += t.dragCoeff;
     dragForce[celli] += t.force;
+
+    sampleCell_.append(celli);
+    sampleWeight_.append(t.weight);
+    sampleProc_.append(t.originProc);
+    sampleIndex_.append(t.originIndex);
 }
 
 
@@ -114,7 +121,7 @@ void Foam::particleDeposit::depositPoint
     vectorField& dragForce,
     List<DynamicList<depositShare>>& toProc,
     List<DynamicList<depositShare>>& toOrigin
-) const
+)
 {
     label lastCell = celli;
     label exitFace = -1;
@@ -161,13 +168,20 @@ void Foam::particleDeposit::deposit
     const pointField& x,
     const labelList& cell,
     const scalarField& r,
+    const scalar kernelRadius,
     const scalarField& K,
     const vectorField& F,
     scalarField& solidVolume,
     scalarField& dragCoeff,
     vectorField& dragForce
-) const
+)
 {
+    nRecords_ = x.size();
+    sampleCell_.clear();
+    sampleWeight_.clear();
+    sampleProc_.clear();
+    sampleIndex_.clear();
+
     const label nProcs = Pstream::nProcs();
     const label me = Pstream::myProcNo();
     const scalar share = 1.0/satellites_.size();
@@ -180,20 +194,23 @@ void Foam::particleDeposit::deposit
         const scalar vol = 4.0/3.0*constant::mathematical::pi*pow3(r[i]);
         const label celli = cell[i];
 
-        depositShare t{x[i], vol, K[i], F[i], me, celli, -1};
+        const scalar R = max(r[i], kernelRadius);
 
-        if (insideCell(x[i], r[i], celli))
+        depositShare t{x[i], 1.0, vol, K[i], F[i], me, i, celli, -1};
+
+        if (insideCell(x[i], R, celli))
         {
             add(t, celli, solidVolume, dragCoeff, dragForce);
             continue;
         }
 
+        t.weight = share;
         t.volume *= share;
         t.dragCoeff *= share;
         t.force *= share;
         for (const vector& s : satellites_)
         {
-            t.p = x[i] + r[i]*s;
+            t.p = x[i] + R*s;
             depositPoint
             (
                 t, celli, solidVolume, dragCoeff, dragForce, toProc, toOrigin
