@@ -2,7 +2,7 @@
 # Cases are built in the build tree at test time.
 #
 # twoWay.pack: a random packed bed (2300 spheres of 100 um, eps ~ 0.39)
-#   poured by the stock liggghts (twoWay/in.pack); the fixture of the rest.
+#   poured by the stock liggghts (tutorials/twoWay/packedBed/constant/DEM/in.pack); the fixture of the rest.
 # twoWay.ergun.<A|B>.Us<Us>: upward flow through the bed held still, one
 #   cell across: the pressure drop across the bed's interior within 3 % of
 #   Ergun's equation on the layers' exact porosities (sphere-slab
@@ -102,3 +102,31 @@ add_test(NAME case.twoWay.settling.parallel
 set_tests_properties(case.twoWay.settling.parallel PROPERTIES
     TIMEOUT 180 LABELS "case;twoWay" PROCESSORS 2
     FIXTURES_REQUIRED twoWaySettling)
+
+# twoWay.momentum.<A|B>: 200 spheres settling in a fully periodic box of
+#   water (no walls): the fluid receives minus the particles' drag at every
+#   step to 1e-10, and the momentum of fluid plus particles follows the
+#   particles' weight less buoyancy to within |W| x one DEM step (the
+#   velocity-Verlet half kick).
+foreach(model A B)
+    add_test(NAME case.twoWay.momentum.${model}
+        COMMAND ${twoWayDir}/runMomentumTest.sh ${model} ${twoWayWork}/momentum_${model})
+    set_tests_properties(case.twoWay.momentum.${model} PROPERTIES
+        TIMEOUT 120 LABELS "case;twoWay")
+endforeach()
+
+# twoWay.suspension[.parallel]: the settlingSuspension tutorial (4584
+#   spheres, 10 % solids, closed column) at test size, 20 coupling steps:
+#   the particles settle, none is lost, and 2 ranks (METIS) give the mean
+#   settling velocity of the serial run within 0.1 %.
+add_test(NAME case.twoWay.suspension
+    COMMAND ${twoWayDir}/runSuspensionTest.sh ${twoWayWork}/suspension)
+set_tests_properties(case.twoWay.suspension PROPERTIES
+    TIMEOUT 180 LABELS "case;twoWay" FIXTURES_SETUP twoWaySuspension)
+
+add_test(NAME case.twoWay.suspension.parallel
+    COMMAND ${twoWayDir}/runSuspensionTest.sh ${twoWayWork}/suspension_parallel
+            2 ${twoWayWork}/suspension)
+set_tests_properties(case.twoWay.suspension.parallel PROPERTIES
+    TIMEOUT 180 LABELS "case;twoWay" PROCESSORS 2
+    FIXTURES_REQUIRED twoWaySuspension)

@@ -77,6 +77,11 @@ int main(int argc, char *argv[])
         if (runTime.writeTime())
         {
             coupling.write();
+            if (fluid.valid())
+            {
+                Info<< "Timing (master, wall clock): fluid solve "
+                    << fluid->seconds() << " s" << endl;
+            }
         }
 
         Info<< "ExecutionTime = " << runTime.elapsedCpuTime() << " s"

@@ -1,6 +1,7 @@
 #include "averagedFluid.H"
 #include "fvCFD.H"
 #include "constrainHbyA.H"
+#include "clockTime.H"
 
 Foam::averagedFluid::averagedFluid
 (
@@ -29,7 +30,14 @@ Foam::averagedFluid::averagedFluid
     ),
     pRefCell_(0),
     pRefValue_(0),
-    nu_("nu", dimViscosity, coupling.nu())
+    nu_("nu", dimViscosity, coupling.nu()),
+    deferred_
+    (
+        IOobject("deferredDrag", U.mesh().time().timeName(), U.mesh()),
+        U.mesh(),
+        dimensionedVector("zero", dimAcceleration, Zero)
+    ),
+    seconds_(0)
 {
     setRefCell(p_, pimple_.dict(), pRefCell_, pRefValue_);
     mesh_.setFluxRequired(p_.name());
@@ -48,7 +56,10 @@ Foam::tmp<Foam::volVectorField> Foam::averagedFluid::pressureTerm() const
 
 Foam::tmp<Foam::volVectorField> Foam::averagedFluid::exchangeSource() const
 {
-    return coupling_.Fexchange() + coupling_.Kexchange()*U_.oldTime();
+    return
+        coupling_.Fexchange()
+      + coupling_.Kexchange()*U_.oldTime()
+      + deferred_;
 }
 
 
@@ -90,7 +101,7 @@ void Foam::averagedFluid::correctPressure(fvVectorMatrix& UEqn)
     // edge of a bed) is then balanced by the pressure gradient face by
     // face, with no checkerboard in p or U
     // eps U = eps (HbyA + rAU S) - Dp grad p
-    const surfaceScalarField phiHbyA
+    surfaceScalarField phiHbyA
     (
         "phiHbyA",
         epsf*(fvc::flux(HbyA) + rAUf*fvc::flux(exchangeSource()))
@@ -99,6 +110,20 @@ void Foam::averagedFluid::correctPressure(fvVectorMatrix& UEqn)
         // velocities decouple from the fluxes at small time steps
       + fvc::interpolate(eps*rAU)*fvc::ddtCorr(eps, U_, phi_)
     );
+
+    // Where U is fixed (walls, inlets) the flux is the boundary's own: the
+    // source term's face value must not make fluid cross a wall
+    surfaceScalarField::Boundary& phiBf = phiHbyA.boundaryFieldRef();
+    forAll(phiBf, patchi)
+    {
+        const fvPatchVectorField& Up = U_.boundaryField()[patchi];
+        if (!Up.coupled() && !Up.assignable())
+        {
+            phiBf[patchi] =
+                epsf.boundaryField()[patchi]
+               *(Up & mesh_.Sf().boundaryField()[patchi]);
+        }
+    }
     const surfaceScalarField Dp
     (
         "Dp",
@@ -118,8 +143,7 @@ void Foam::averagedFluid::correctPressure(fvVectorMatrix& UEqn)
         {
             phi_ = phiHbyA - pEqn.flux();
 
-            // Cell velocity from the fluxes
-            U_ = fvc::reconstruct(phi_/epsf);
+            U_ = HbyA + rAU*(exchangeSource() + pressureTerm());
             U_.correctBoundaryConditions();
         }
     }
@@ -137,6 +161,8 @@ void Foam::averagedFluid::correctPressure(fvVectorMatrix& UEqn)
 
 void Foam::averagedFluid::solve()
 {
+    clockTime clock;
+
     while (pimple_.loop())
     {
         tmp<fvVectorMatrix> tUEqn(momentum());
@@ -146,4 +172,16 @@ void Foam::averagedFluid::solve()
             correctPressure(tUEqn.ref());
         }
     }
+
+    // The implicit drag term Kexchange (U^n - U^{n+1}) of this step is not
+    // an exchange with the particles: give its momentum back at the next
+    // step, so that over the run the fluid receives exactly the particles'
+    // reaction (up to the last step's term)
+    deferred_ = coupling_.Kexchange()*(U_ - U_.oldTime());
+    Info<< "Fluid: implicit drag term " << -fvc::domainIntegrate(deferred_).value()
+        << " m^4/s^2 (returned next step), exchange "
+        << fvc::domainIntegrate(coupling_.Fexchange()).value() << " m^4/s^2"
+        << endl;
+
+    seconds_ += clock.timeIncrement();
 }

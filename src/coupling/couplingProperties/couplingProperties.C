@@ -116,6 +116,13 @@ Foam::couplingProperties::couplingProperties(const objectRegistry& obr)
                 << " (allowed range: (0, 1))" << exit(FatalIOError);
         }
         epsilonMin_ = tw.get<scalar>("epsilonMin");
+        if (!(epsilonMin_ > 0 && epsilonMin_ < 1))
+        {
+            FatalIOErrorInFunction(tw)
+                << "Keyword 'epsilonMin' in " << tw.name() << " is "
+                << epsilonMin_ << "; allowed range: (0, 1)"
+                << exit(FatalIOError);
+        }
 
         kernelRadius_ = tw.getOrDefault<scalar>("kernelRadius", 0);
         if (kernelRadius_ < 0)

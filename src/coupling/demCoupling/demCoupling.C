@@ -603,7 +603,10 @@ void Foam::demCoupling::updateForces()
     {
         clockTime clock;
 
-        UInterp_.update();
+        if (!(props_.twoWay() && props_.kernelRadius() > 0))
+        {
+            UInterp_.update();
+        }
 
         tmp<volVectorField> tgradp;
         for (const forceModel& model : forces_)
@@ -618,6 +621,9 @@ void Foam::demCoupling::updateForces()
         const scalar mu = props_.muFluid();
         const vector& g = g_.value();
 
+        const bool kernelSampling =
+            props_.twoWay() && props_.kernelRadius() > 0;
+
         // Context of a particle; eps = 1, U = 0, no grad(p) outside the
         // fluid or without two-way coupling
         auto context = [&](const scalar radius, const scalar mass,
@@ -628,7 +634,9 @@ void Foam::demCoupling::updateForces()
             c.volume = 4.0/3.0*constant::mathematical::pi*pow3(radius);
             c.mass = mass;
             c.v = v;
-            c.U = (celli >= 0) ? UInterp_.interpolate(x, celli) : vector::zero;
+            c.U =
+                (celli >= 0 && !kernelSampling)
+              ? UInterp_.interpolate(x, celli) : vector::zero;
             c.gradp =
                 (celli >= 0 && tgradp.valid()) ? tgradp()[celli] : vector::zero;
             c.eps =
@@ -654,8 +662,6 @@ void Foam::demCoupling::updateForces()
         // Kernel averages at the records (two-way with a kernel radius:
         // the transpose of the deposit), else the interpolated U and the
         // values of the particle's cell
-        const bool kernelSampling =
-            props_.twoWay() && props_.kernelRadius() > 0;
         tmp<vectorField> kernelU, kernelGradp;
         tmp<scalarField> kernelEps;
         if (kernelSampling)
@@ -795,7 +801,9 @@ void Foam::demCoupling::evolve()
 
         if (props_.twoWay())
         {
-            voidfraction_->storeOldTime();
+            // The fluid fraction of the old time, before the deposit
+            // below changes it (oldTime() stores it once per time step)
+            voidfraction_->oldTime();
         }
 
         dem.run(props_.couplingInterval());

@@ -140,11 +140,11 @@ void Foam::particleDeposit::depositPoint
             return;
         }
     }
-    if (target < 0)
+    if (target < 0 && exitFace < 0)
     {
-        // The walk did not settle or left through a wall, inlet or
-        // outlet face (concave cells and boundaries of polyhedral meshes):
-        // search this mesh part
+        // The walk did not settle (concave polyhedra): search this mesh
+        // part.  (A point beyond a wall, inlet or outlet face is outside
+        // the fluid: no search, most kernel points near walls are.)
         target = locator_.findCell(t.p, -1);
     }
     if (target >= 0)

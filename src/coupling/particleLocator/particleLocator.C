@@ -8,8 +8,40 @@ Foam::particleLocator::particleLocator(const polyMesh& mesh)
     mesh_(mesh),
     search_(mesh, polyMesh::CELL_TETS),
     wallTree_(),
+    convexCell_(mesh.nCells(), true),
     nGlobalSearches_(0)
 {
+    // Convex cells bounded by planar faces: every point of the cell on the
+    // inner side of every face plane (to a tolerance relative to the
+    // cell's size).  In them the face-plane test alone decides.
+    const pointField& pts = mesh.points();
+    const faceList& faces = mesh.faces();
+    const labelList& own = mesh.faceOwner();
+    const vectorField& Sf = mesh.faceAreas();
+    const vectorField& Cf = mesh.faceCentres();
+    forAll(convexCell_, celli)
+    {
+        const scalar tol = 1e-8*cbrt(mesh.cellVolumes()[celli]);
+        const labelList cellPts(mesh.cells()[celli].labels(faces));
+        for (const label facei : mesh.cells()[celli])
+        {
+            const vector n =
+                ((own[facei] == celli) ? 1 : -1)*Sf[facei]/mag(Sf[facei]);
+            for (const label pointi : cellPts)
+            {
+                if (((pts[pointi] - Cf[facei]) & n) > tol)
+                {
+                    convexCell_[celli] = false;
+                    break;
+                }
+            }
+            if (!convexCell_[celli])
+            {
+                break;
+            }
+        }
+    }
+
     DynamicList<label> wallFaces;
     for (const polyPatch& pp : mesh.boundaryMesh())
     {
@@ -81,8 +113,13 @@ Foam::label Foam::particleLocator::walk
 
         if (exitFace < 0)
         {
-            // Inside every face plane: confirm with the tet decomposition
-            if (mesh_.pointInCell(p, celli, polyMesh::CELL_TETS))
+            // Inside every face plane: inside a convex cell; else confirm
+            // with the tet decomposition
+            if
+            (
+                convexCell_[celli]
+             || mesh_.pointInCell(p, celli, polyMesh::CELL_TETS)
+            )
             {
                 return celli;
             }
@@ -124,7 +161,8 @@ Foam::label Foam::particleLocator::walk
         // between such a cell and its neighbour.
         if
         (
-            exitDist < concaveTolerance_*cbrt(mesh_.cellVolumes()[celli])
+            !convexCell_[celli]
+         && exitDist < concaveTolerance_*cbrt(mesh_.cellVolumes()[celli])
          && mesh_.pointInCell(p, celli, polyMesh::CELL_TETS)
         )
         {

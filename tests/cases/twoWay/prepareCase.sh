@@ -1,13 +1,6 @@
-# Sourced by the two-way test scripts: the environment, and a copy of the
-# packedBed case in $work with the packed bed of $pack (makePack.sh).
-# Needs: here (this folder), pack, work.
-export PYTHONDONTWRITEBYTECODE=1   # no __pycache__ in the source tree
-set +u
-source "$here/../../../etc/bashrc"
-set -u
-
-rm -rf "$work"
-mkdir -p "$(dirname "$work")"
-cp -r "$here/packedBed" "$work"
-cd "$work"
+# Sourced by the packed-bed test scripts (needs: here, pack, work): a copy
+# of the packedBed tutorial case in $work with the packed bed of $pack
+# (makePack.sh).
+source "$here/caseFunctions.sh"
+copyCase "$COLLOIDFOAM_TUTORIALS/twoWay/packedBed" "$work"
 cp "$pack/bed.data" constant/DEM/

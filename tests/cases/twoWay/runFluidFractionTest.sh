@@ -38,14 +38,6 @@ case $mesh in
     *)   echo "unknown mesh type $mesh"; exit 2 ;;
 esac
 
-if [ "$nProcs" -gt 1 ]
-then
-    decomposePar > log.decomposePar 2>&1
-    mpirun -np "$nProcs" colloidDEMFoam -parallel > log.colloidDEMFoam 2>&1 \
-        || { tail -30 log.colloidDEMFoam; exit 1; }
-    reconstructPar -latestTime > log.reconstructPar 2>&1
-else
-    colloidDEMFoam > log.colloidDEMFoam 2>&1 || { tail -30 log.colloidDEMFoam; exit 1; }
-fi
+runSolver "$nProcs"
 
 python3 "$here/checkFluidFraction.py" "$work" $serial ${6:-}

@@ -18,15 +18,8 @@ tol=$8
 nProcs=${9:-1}
 serial=${10:-}
 here=$(cd "$(dirname "$0")" && pwd)
-export PYTHONDONTWRITEBYTECODE=1
-set +u
-source "$here/../../../etc/bashrc"
-set -u
-
-rm -rf "$work"
-mkdir -p "$(dirname "$work")"
-cp -r "$here/settling" "$work"
-cd "$work"
+source "$here/caseFunctions.sh"
+copyCase "$here/settling" "$work"
 
 d=1e-4
 delta=$(python3 -c "print($cells*$d)")
@@ -40,14 +33,6 @@ foamDictionary constant/couplingProperties -entry twoWay/kernelRadius \
 foamDictionary constant/couplingProperties -entry twoWay/selfInducedVelocity \
     -set "$selfInduced" > /dev/null
 
-if [ "$nProcs" -gt 1 ]
-then
-    decomposePar > log.decomposePar 2>&1
-    mpirun -np "$nProcs" colloidDEMFoam -parallel > log.colloidDEMFoam 2>&1 \
-        || { tail -30 log.colloidDEMFoam; exit 1; }
-    reconstructPar > log.reconstructPar 2>&1
-else
-    colloidDEMFoam > log.colloidDEMFoam 2>&1 || { tail -30 log.colloidDEMFoam; exit 1; }
-fi
+runSolver "$nProcs"
 
 python3 "$here/checkSettlingVelocity.py" "$work" "$tol" $serial

@@ -1,5 +1,5 @@
-"""Pressure drop across the interior of a fixed packed bed (two-way
-coupled colloidDEMFoam run) against Ergun's equation.
+"""Pressure drop across the interior of the fixed packed bed of this case
+(two-way coupled colloidDEMFoam run) against Ergun's equation.
 
 The column is one cell across (flow along y only), so the cell layers of
 the bed are resistances in series: between the centres of two cells a and
@@ -7,37 +7,37 @@ b the steady pressure drop is the trapezoidal sum of Ergun's gradient
 
     G(eps) = 150 mu (1-eps)^2 Us/(eps^3 d^2) + 1.75 rho (1-eps) Us^2/(eps^3 d)
 
-over the layers.  Reference (asserted within 3 %): each layer's porosity
-computed exactly from the particles, as the volume of every sphere inside
-the layer's slab (spherical caps), independently of the solver's
-deposition kernel.  Also printed: the same sum over the solver's own
-fluid-fraction field (what the fluid solve saw), and Ergun at the
-section's mean porosity.
+over the layers.  Reference: each layer's porosity computed exactly from
+the particles, as the volume of every sphere inside the layer's slab
+(spherical caps), independently of the solver's deposition kernel.  Also
+given: the same sum over the solver's own fluid-fraction field (what the
+fluid solve saw), and Ergun at the section's mean porosity.
 
-Also checked: the solid volume of the fluid-fraction field equals the
-particles' volume at every step (the log's 'Fluid fraction' lines) to
-1e-12.
+As a program (the twoWay tests): check one run, within 3 % of the
+reference, and the solid volume against the particles' at every step to
+1e-12; with a reference run (the same, serial) also the pressure drop
+within 0.1 %.
 
-With a reference case (the same bed and velocity run serially), the
-pressure drop must also agree with the reference's within 0.1 %.
-
-usage: checkErgun.py caseDir Us [referenceCaseDir]
+usage: bedPressureDrop.py caseDir Us [referenceCaseDir]
 """
 import math
 import os
 import re
 import sys
 
-sys.path.insert(0, os.path.join(os.path.dirname(__file__), '..', 'fluidCommon'))
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)),
+                                '..', '..', '..', 'tests', 'cases', 'fluidCommon'))
 import foamFields  # noqa: E402
 
-MU, RHO, D = 1e-3, 1000.0, 1e-4
+MU, RHO, D = 1e-3, 1000.0, 1e-4   # constant/couplingProperties
 AREA = 1e-3*1e-3                  # column cross-section [m^2]
 Y_LO, Y_HI = 0.625e-3, 1.625e-3   # centres of the bed's interior cells [m]
 TOL = 0.03
 
 
 def ergun(eps, us):
+    """Ergun's pressure gradient [Pa/m] at porosity eps, superficial
+    velocity us [m/s]"""
     phi = 1 - eps
     return (150*MU*phi*phi*us/(eps**3*D*D)
             + 1.75*RHO*phi*us*us/(eps**3*D))
@@ -80,30 +80,38 @@ def section_of(case):
     return eps, cy, a, b, section, RHO*(p[a] - p[b])
 
 
-def main():
-    case, us = sys.argv[1], float(sys.argv[2])
+def analyse(case, us):
+    """dict: the run's pressure drop and the references [Pa], porosities"""
     eps, cy, a, b, section, dp = section_of(case)
     dy = cy[section[1]] - cy[section[0]]
-
     ys = particles_y(case)
     eps_exact = [slab_porosity(ys, cy[i] - dy/2, cy[i] + dy/2) for i in section]
-    ref = trapezoid([ergun(e, us) for e in eps_exact], dy)
-    ref_field = trapezoid([ergun(eps[i], us) for i in section], dy)
-    eps_mean = slab_porosity(ys, cy[a], cy[b])
-    ref_mean = ergun(eps_mean, us)*(cy[b] - cy[a])
+    return dict(
+        us=us, re=RHO*us*D/MU, length=cy[b] - cy[a], dp=dp,
+        ergun=trapezoid([ergun(e, us) for e in eps_exact], dy),
+        ergun_field=trapezoid([ergun(eps[i], us) for i in section], dy),
+        eps_mean=slab_porosity(ys, cy[a], cy[b]),
+        eps_layers=list(zip(eps_exact, [eps[i] for i in section])))
+
+
+def main():
+    case, us = sys.argv[1], float(sys.argv[2])
+    r = analyse(case, us)
+    ref_mean = ergun(r['eps_mean'], us)*r['length']
 
     log = open(os.path.join(case, 'log.colloidDEMFoam')).read()
     solid_err = max(float(x) for x in re.findall(
         r'Fluid fraction: .*\(relative difference (\S+)\)', log))
 
-    err = dp/ref - 1
+    err = r['dp']/r['ergun'] - 1
     print('Us %.3g m/s  Re_p %.3g  dp %.6g Pa  Ergun %.6g Pa (%+.2f %%)'
           '  [on the solver\'s eps: %+.2f %%; at the mean porosity %.4f:'
           ' %+.2f %%]'
-          % (us, RHO*us*D/MU, dp, ref, 100*err, 100*(dp/ref_field - 1),
-             eps_mean, 100*(dp/ref_mean - 1)))
+          % (us, r['re'], r['dp'], r['ergun'], 100*err,
+             100*(r['dp']/r['ergun_field'] - 1), r['eps_mean'],
+             100*(r['dp']/ref_mean - 1)))
     print('layer porosities exact / solver: %s'
-          % ' '.join('%.4f/%.4f' % (e, eps[i]) for e, i in zip(eps_exact, section)))
+          % ' '.join('%.4f/%.4f' % pair for pair in r['eps_layers']))
     print('solid volume against the particles\' volume: %.2e relative (max'
           ' over the steps)' % solid_err)
 
@@ -111,8 +119,9 @@ def main():
     if len(sys.argv) > 3:
         dp_ref = section_of(sys.argv[3])[5]
         print('against %s: dp %.6g Pa (%+.2e relative)'
-              % (sys.argv[3], dp_ref, dp/dp_ref - 1))
-        ok &= abs(dp/dp_ref - 1) <= 1e-3
+              % (sys.argv[3], dp_ref, r['dp']/dp_ref - 1))
+        ok &= abs(r['dp']/dp_ref - 1) <= 1e-3
+
     print('PASS' if ok else 'FAIL')
     return 0 if ok else 1
 

@@ -1,0 +1,102 @@
+"""Momentum of a closed (fully periodic) two-way run.
+
+1. Every coupling step the fluid receives minus the drag impulse the DEM
+   applied to the particles: the log's 'Momentum exchange' lines, relative
+   difference at most 1e-10.
+2. The momentum of fluid plus particles, rho_f sum(eps U V) + sum(m v),
+   changes only by the external force, the particles' weight less
+   buoyancy W = sum((m - rho_f V_p) g): at every written time
+   |P(t) - P(t0) - W (t - t0)| <= |W| dt, dt the DEM step.  The bound is
+   the integrator's: velocity Verlet gives each step's force half a kick
+   at the end of the step and half at the start of the next, so the
+   particles' momentum at a write lags the impulses by up to half a
+   step's; the fluid's implicit drag term is given back one step later.
+
+usage: checkMomentum.py caseDir
+"""
+import math
+import os
+import re
+import subprocess
+import sys
+
+sys.path.insert(0, os.path.join(os.path.dirname(__file__), '..', 'fluidCommon'))
+sys.path.insert(0, os.path.join(os.path.dirname(__file__), '..', 'coupling'))
+import foamFields  # noqa: E402
+import particleVTK  # noqa: E402
+
+
+def number(text, key):
+    return float(re.search(r'\b%s\s+([^;\s]+)\s*;' % key, text).group(1))
+
+
+def main():
+    case = sys.argv[1]
+    ok = True
+
+    log = open(os.path.join(case, 'log.colloidDEMFoam')).read()
+    exch = [float(x) for x in re.findall(
+        r'Momentum exchange: .*\(relative difference (\S+)\)', log)]
+    print('momentum exchange: %d steps, fluid against particles %.2e relative'
+          ' (max)' % (len(exch), max(exch)))
+    ok &= len(exch) > 0 and max(exch) <= 1e-10
+
+    props = open(os.path.join(case, 'constant', 'couplingProperties')).read()
+    rho_f = number(props[props.index('fluid'):], 'rho')
+    rho_p = number(props[props.index('particles'):], 'density')
+    dt = number(props[props.index('DEM'):], 'timeStep')
+    g = [float(v) for v in re.search(
+        r'value\s+\(([^)]*)\)', open(os.path.join(case, 'constant', 'g')).read()
+    ).group(1).split()]
+
+    subprocess.run(['postProcess', '-case', case, '-func', 'writeCellVolumes',
+                    '-time', '0'], check=True, stdout=subprocess.DEVNULL)
+    vol = foamFields.read_internal_field(os.path.join(case, '0', 'V'))
+
+    files = [f for f in particleVTK.all_files(case)
+             if particleVTK.read(f)['radius']]
+    times = [particleVTK.time(f) for f in files]
+    momentum = []
+    weight = None
+    for f, t in zip(files, times):
+        parts = particleVTK.read(f)
+        masses = [rho_p*4/3*math.pi*r**3 for r in parts['radius']]
+        buoy = [rho_f*4/3*math.pi*r**3 for r in parts['radius']]
+        pp = [math.fsum(m*v[k] for m, v in zip(masses, parts['velocity']))
+              for k in range(3)]
+        if t > 0:
+            tdir = [d for d in os.listdir(case)
+                    if re.fullmatch(r'[0-9.e+-]+', d) and d != '0'
+                    and abs(float(d) - t) <= 1e-9*t][0]
+            U = foamFields.read_internal_field(os.path.join(case, tdir, 'U'))
+            eps = foamFields.read_internal_field(
+                os.path.join(case, tdir, 'voidfraction'))
+            pf = [rho_f*math.fsum(e*u[k]*v for e, u, v in zip(eps, U, vol))
+                  for k in range(3)]
+        else:
+            pf = [0, 0, 0]      # the case starts with the fluid at rest
+        momentum.append([a + b for a, b in zip(pp, pf)])
+        w = [math.fsum((m - b)*g[k] for m, b in zip(masses, buoy)) for k in range(3)]
+        weight = weight or w
+
+    bound = dt*math.sqrt(sum(w*w for w in weight))
+    worst = 0
+    for t, P in zip(times[1:], momentum[1:]):
+        expected = [momentum[0][k] + weight[k]*(t - times[0]) for k in range(3)]
+        err = math.sqrt(sum((P[k] - expected[k])**2 for k in range(3)))
+        worst = max(worst, err)
+    span = [weight[k]*(times[-1] - times[0]) for k in range(3)]
+    print('total momentum against P(t0) + W (t - t0) over %d times: at most'
+          ' %.3g of |W| dt (bound 1), %.2e of |W (t_end - t0)|'
+          % (len(times) - 1, worst/bound, worst/math.sqrt(sum(x*x for x in span))))
+    print('  P(end) - P(t0) = %s, W (t_end - t0) = %s' % (
+        ' '.join('%.6g' % (momentum[-1][k] - momentum[0][k]) for k in range(3)),
+        ' '.join('%.6g' % x for x in span)))
+    ok &= worst <= bound
+
+    print('PASS' if ok else 'FAIL')
+    return 0 if ok else 1
+
+
+if __name__ == '__main__':
+    sys.exit(main())
