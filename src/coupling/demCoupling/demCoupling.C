@@ -147,6 +147,24 @@ void Foam::demCoupling::startDEM()
             props_.particleDensity()/demUnits::density
         )
     );
+    // The fluid of the settings, for the DEM's own liquid models (e.g.
+    // the plugin's lubrication viscosity): one source for rho and mu
+    dem.command
+    (
+        defineVariable
+        (
+            "colloid_fluid_density",
+            props_.rhoFluid()/demUnits::density
+        )
+    );
+    dem.command
+    (
+        defineVariable
+        (
+            "colloid_fluid_viscosity",
+            props_.muFluid()/demUnits::viscosity
+        )
+    );
     dem.command
     (
         defineVariable
@@ -232,7 +250,6 @@ void Foam::demCoupling::locateLocal
 (
     const bool wantWallDistance,
     pointField& position,
-    vectorField& Uf,
     labelList& proc,
     labelList& cell,
     scalarField& wallDist
@@ -287,7 +304,7 @@ void Foam::demCoupling::locateLocal
 
     exchange_.locate
     (
-        position, prevProc, prevCell, maxWallDist, Uf, proc, cell, wallDist
+        position, prevProc, prevCell, maxWallDist, proc, cell, wallDist
     );
 
     // Store the new hints with the atoms
@@ -379,10 +396,9 @@ void Foam::demCoupling::gatherRecords()
     countNewParticles();
 
     pointField position;
-    vectorField Uf;
     labelList cell;
     scalarField wallDist;
-    locateLocal(false, position, Uf, proc_, cell, wallDist);
+    locateLocal(false, position, proc_, cell, wallDist);
 
     liggghtsEngine& dem = engine_();
     const int n = dem.nLocal();
@@ -502,7 +518,7 @@ Foam::demCoupling::demCoupling
     drag_(dragModel::New(props_)),
     forces_(forceModel::New(props_)),
     locator_(U.mesh()),
-    exchange_(U, locator_),
+    exchange_(U.mesh(), locator_),
     UInterp_(U),
     records_(),
     deposit_(U.mesh(), locator_),
@@ -830,10 +846,9 @@ void Foam::demCoupling::write()
         countNewParticles();
 
         pointField position;
-        vectorField Uf;
         labelList proc, cell;
         scalarField wallDist;
-        locateLocal(true, position, Uf, proc, cell, wallDist);
+        locateLocal(true, position, proc, cell, wallDist);
 
         liggghtsEngine& dem = engine_();
         const int n = dem.nLocal();

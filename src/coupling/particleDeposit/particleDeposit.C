@@ -58,14 +58,14 @@ bool Foam::particleDeposit::insideCell
 ) const
 {
     const labelList& own = mesh_.faceOwner();
-    const vectorField& Sf = mesh_.faceAreas();
+    const vectorField& n = locator_.faceNormals();
     const vectorField& Cf = mesh_.faceCentres();
 
     for (const label facei : mesh_.cells()[celli])
     {
         const scalar sign = (own[facei] == celli) ? 1 : -1;
         // Distance of x inside the face plane
-        if (-sign*((x - Cf[facei]) & Sf[facei]) < r*mag(Sf[facei]))
+        if (-sign*((x - Cf[facei]) & n[facei]) < r)
         {
             return false;
         }

@@ -4,13 +4,12 @@
 
 Foam::particleExchange::particleExchange
 (
-    const volVectorField& U,
+    const fvMesh& mesh,
     const particleLocator& locator
 )
 :
-    mesh_(U.mesh()),
+    mesh_(mesh),
     locator_(locator),
-    UInterp_(U),
     procBb_(Pstream::nProcs())
 {
     // Slightly enlarged so that points on the mesh boundary are inside
@@ -28,19 +27,16 @@ void Foam::particleExchange::answer
     const List<point>& p,
     const labelList& hint,
     const scalarList& maxWallDist,
-    List<vector>& U,
     labelList& cell,
     scalarList& wallDist
 ) const
 {
-    U.setSize(p.size());
     cell.setSize(p.size());
     wallDist.setSize(p.size());
 
     forAll(p, i)
     {
         cell[i] = locator_.findCell(p[i], hint[i]);
-        U[i] = (cell[i] >= 0) ? UInterp_.interpolate(p[i], cell[i]) : Zero;
         wallDist[i] =
             (cell[i] >= 0 && maxWallDist[i] > 0)
           ? locator_.wallDistance(p[i], maxWallDist[i])
@@ -54,19 +50,17 @@ void Foam::particleExchange::exchange
     const List<List<point>>& p,
     const List<labelList>& hint,
     const List<scalarList>& maxWallDist,
-    List<List<vector>>& U,
     List<labelList>& cell,
     List<scalarList>& wallDist
 ) const
 {
     const label nProcs = Pstream::nProcs();
-    U.setSize(nProcs);
     cell.setSize(nProcs);
     wallDist.setSize(nProcs);
 
     if (!Pstream::parRun())
     {
-        answer(p[0], hint[0], maxWallDist[0], U[0], cell[0], wallDist[0]);
+        answer(p[0], hint[0], maxWallDist[0], cell[0], wallDist[0]);
         return;
     }
 
@@ -94,13 +88,12 @@ void Foam::particleExchange::exchange
             labelList qHint(is);
             scalarList qMax(is);
 
-            List<vector> aU;
             labelList aCell;
             scalarList aWall;
-            answer(qp, qHint, qMax, aU, aCell, aWall);
+            answer(qp, qHint, qMax, aCell, aWall);
 
             UOPstream os(proci, answers);
-            os << aU << aCell << aWall;
+            os << aCell << aWall;
         }
     }
     labelList answerSizes;
@@ -111,7 +104,7 @@ void Foam::particleExchange::exchange
         if (answerSizes[proci])
         {
             UIPstream is(proci, answers);
-            is >> U[proci] >> cell[proci] >> wallDist[proci];
+            is >> cell[proci] >> wallDist[proci];
         }
     }
 }
@@ -123,7 +116,6 @@ void Foam::particleExchange::locate
     const labelList& prevProc,
     const labelList& prevCell,
     const scalarList& maxWallDist,
-    List<vector>& U,
     labelList& proc,
     labelList& cell,
     scalarList& wallDist
@@ -132,8 +124,6 @@ void Foam::particleExchange::locate
     const label nProcs = Pstream::nProcs();
     const label n = p.size();
 
-    U = Zero;
-    U.setSize(n, Zero);
     proc.setSize(n, -1);
     proc = -1;
     cell.setSize(n, -1);
@@ -214,10 +204,9 @@ void Foam::particleExchange::locate
             sendMax[proci].transfer(qMax[proci]);
         }
 
-        List<List<vector>> aU;
         List<labelList> aCell;
         List<scalarList> aWall;
-        exchange(sendP, sendHint, sendMax, aU, aCell, aWall);
+        exchange(sendP, sendHint, sendMax, aCell, aWall);
 
         // Lowest rank wins where a point on a processor face is found twice
         for (label proci = 0; proci < nProcs; ++proci)
@@ -228,7 +217,6 @@ void Foam::particleExchange::locate
                 const label i = idx[k];
                 if (aCell[proci][k] >= 0 && cell[i] < 0)
                 {
-                    U[i] = aU[proci][k];
                     proc[i] = proci;
                     cell[i] = aCell[proci][k];
                     wallDist[i] = aWall[proci][k];

@@ -8,6 +8,7 @@ Foam::particleLocator::particleLocator(const polyMesh& mesh)
     mesh_(mesh),
     search_(mesh, polyMesh::CELL_TETS),
     wallTree_(),
+    faceNormal_(mesh.faceAreas()/mag(mesh.faceAreas())),
     convexCell_(mesh.nCells(), true),
     nGlobalSearches_(0)
 {
@@ -90,7 +91,6 @@ Foam::label Foam::particleLocator::walk
     const cellList& cells = mesh_.cells();
     const labelList& own = mesh_.faceOwner();
     const labelList& nei = mesh_.faceNeighbour();
-    const vectorField& Sf = mesh_.faceAreas();
     const vectorField& Cf = mesh_.faceCentres();
 
     for (label step = 0; step < maxWalkSteps_; ++step)
@@ -103,7 +103,7 @@ Foam::label Foam::particleLocator::walk
         for (const label facei : cells[celli])
         {
             const scalar sign = (own[facei] == celli) ? 1 : -1;
-            const scalar d = sign*((p - Cf[facei]) & Sf[facei])/mag(Sf[facei]);
+            const scalar d = sign*((p - Cf[facei]) & faceNormal_[facei]);
             if (d > exitDist)
             {
                 exitDist = d;
@@ -145,7 +145,7 @@ Foam::label Foam::particleLocator::walk
                 {
                     const scalar sign = (own[facei] == celli) ? 1 : -1;
                     const scalar d =
-                        sign*((p - Cf[facei]) & Sf[facei])/mag(Sf[facei]);
+                        sign*((p - Cf[facei]) & faceNormal_[facei]);
                     if (d > nearest)
                     {
                         nearest = d;
