@@ -23,7 +23,7 @@ Foam::averagedFluid::averagedFluid
             "phi",
             U.mesh().time().timeName(),
             U.mesh(),
-            IOobject::READ_IF_PRESENT,
+            IOobject::NO_READ,
             IOobject::AUTO_WRITE
         ),
         fvc::flux(coupling.voidfraction()*U)

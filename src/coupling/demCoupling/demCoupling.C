@@ -345,7 +345,7 @@ void Foam::demCoupling::checkTransientSetup() const
     const dictionary& solvers = solution.subDict("solvers");
     for (const char* field : {"p", "U"})
     {
-        if (!solvers.found(field) && !solvers.found("\"(U|p)\""))
+        if (!solvers.found(field))
         {
             FatalIOErrorInFunction(solvers)
                 << "couplingMode twoWay needs a linear solver for '"
@@ -364,6 +364,20 @@ void Foam::demCoupling::checkTransientSetup() const
 
 void Foam::demCoupling::checkForceModels() const
 {
+    bool pressureForce = false;
+    for (const forceModel& model : forces_)
+    {
+        pressureForce = pressureForce || model.needsPressureGradient();
+    }
+    if (props_.twoWay() && !props_.modelB() && !pressureForce)
+    {
+        FatalIOErrorInFunction(props_)
+            << "Keyword 'forceModels' in " << props_.objectPath()
+            << " lacks 'pressureGradient', which modelType A needs: its"
+            << " fluid feels -eps grad p, so the particles must feel"
+            << " -V grad p (or use modelType B)" << exit(FatalIOError);
+    }
+
     for (const forceModel& model : forces_)
     {
         if (!model.needsPressureGradient())
@@ -592,11 +606,6 @@ Foam::demCoupling::demCoupling
     {
         startDEM();
         gatherRecords();
-        if (props_.twoWay())
-        {
-            // The start is no step: no impulse to exchange yet
-            Fexchange_() == dimensionedVector("zero", dimAcceleration, Zero);
-        }
         updateForces();
     }
     catch (const std::exception& e)
@@ -619,7 +628,12 @@ void Foam::demCoupling::updateForces()
     {
         clockTime clock;
 
-        if (!(props_.twoWay() && props_.kernelRadius() > 0))
+        // Two-way: eps and grad p averaged over each particle's kernel (the
+        // transpose of its deposit: the pressure-gradient forces then
+        // balance the fluid's eps grad p exactly), and so is U with a
+        // kernel radius; else U interpolated at the centre
+        const bool kernelU = props_.twoWay() && props_.kernelRadius() > 0;
+        if (!kernelU)
         {
             UInterp_.update();
         }
@@ -637,9 +651,6 @@ void Foam::demCoupling::updateForces()
         const scalar mu = props_.muFluid();
         const vector& g = g_.value();
 
-        const bool kernelSampling =
-            props_.twoWay() && props_.kernelRadius() > 0;
-
         // Context of a particle; eps = 1, U = 0, no grad(p) outside the
         // fluid or without two-way coupling
         auto context = [&](const scalar radius, const scalar mass,
@@ -651,7 +662,7 @@ void Foam::demCoupling::updateForces()
             c.mass = mass;
             c.v = v;
             c.U =
-                (celli >= 0 && !kernelSampling)
+                (celli >= 0 && !kernelU)
               ? UInterp_.interpolate(x, celli) : vector::zero;
             c.gradp =
                 (celli >= 0 && tgradp.valid()) ? tgradp()[celli] : vector::zero;
@@ -675,18 +686,18 @@ void Foam::demCoupling::updateForces()
             return F;
         };
 
-        // Kernel averages at the records (two-way with a kernel radius:
-        // the transpose of the deposit), else the interpolated U and the
-        // values of the particle's cell
-        tmp<vectorField> kernelU, kernelGradp;
-        tmp<scalarField> kernelEps;
-        if (kernelSampling)
+        tmp<vectorField> sampledU, sampledGradp;
+        tmp<scalarField> sampledEps;
+        if (props_.twoWay())
         {
-            kernelU = deposit_.sample(UInterp_.field());
-            kernelEps = deposit_.sample(voidfraction_());
+            sampledEps = deposit_.sample(voidfraction_());
+            if (kernelU)
+            {
+                sampledU = deposit_.sample(UInterp_.field());
+            }
             if (tgradp.valid())
             {
-                kernelGradp = deposit_.sample(tgradp());
+                sampledGradp = deposit_.sample(tgradp());
             }
         }
 
@@ -702,14 +713,17 @@ void Foam::demCoupling::updateForces()
                 records_.radius[k], records_.mass[k], records_.velocity[k],
                 records_.cell[k], records_.position[k]
             );
-            if (kernelSampling)
+            if (sampledEps.valid())
             {
-                c.U = kernelU()[k];
-                c.eps = kernelEps()[k];
-                if (kernelGradp.valid())
-                {
-                    c.gradp = kernelGradp()[k];
-                }
+                c.eps = sampledEps()[k];
+            }
+            if (sampledU.valid())
+            {
+                c.U = sampledU()[k];
+            }
+            if (sampledGradp.valid())
+            {
+                c.gradp = sampledGradp()[k];
             }
             scalar K = drag_->K(c);
             if (props_.modelB())

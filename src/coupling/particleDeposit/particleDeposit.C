@@ -1,6 +1,7 @@
 #include "particleDeposit.H"
 #include "processorPolyPatch.H"
 #include "processorCyclicPolyPatch.H"
+#include "cyclicPolyPatch.H"
 #include "PstreamBuffers.H"
 #include "mathematicalConstants.H"
 
@@ -123,20 +124,45 @@ void Foam::particleDeposit::depositPoint
     List<DynamicList<depositShare>>& toOrigin
 )
 {
+    const vectorField& Cf = mesh_.faceCentres();
+
+    depositShare here(t);
     label lastCell = celli;
     label exitFace = -1;
-    label target = locator_.walkFrom(t.p, celli, lastCell, exitFace);
+    label target = locator_.walkFrom(here.p, celli, lastCell, exitFace);
+
+    // Across translational cyclic patches: the point's image, from the
+    // cell behind the matching face (a few crossings at most)
+    for (label crossing = 0; crossing < 3 && target < 0 && exitFace >= 0; ++crossing)
+    {
+        const polyPatch& pp =
+            mesh_.boundaryMesh()[mesh_.boundaryMesh().whichPatch(exitFace)];
+        if (!isA<cyclicPolyPatch>(pp))
+        {
+            break;
+        }
+        const cyclicPolyPatch& cpp = refCast<const cyclicPolyPatch>(pp);
+        if (!cpp.parallel())
+        {
+            break;      // rotational: treated as outside the fluid
+        }
+        const label nbrFace = cpp.neighbPatch().start() + exitFace - pp.start();
+        here.p += Cf[nbrFace] - Cf[exitFace];
+        target = locator_.walkFrom
+        (
+            here.p, mesh_.faceOwner()[nbrFace], lastCell, exitFace
+        );
+    }
 
     if (target < 0 && exitFace >= 0)
     {
-        const label patchi = mesh_.boundaryMesh().whichPatch(exitFace);
-        const polyPatch& pp = mesh_.boundaryMesh()[patchi];
+        const polyPatch& pp =
+            mesh_.boundaryMesh()[mesh_.boundaryMesh().whichPatch(exitFace)];
         if (isA<processorPolyPatch>(pp) && !isA<processorCyclicPolyPatch>(pp))
         {
-            depositShare next(t);
-            next.face = exitFace - pp.start();
+            here.face = exitFace - pp.start();
             toProc[refCast<const processorPolyPatch>(pp).neighbProcNo()]
-                .append(next);
+                .append(here);
             return;
         }
     }
@@ -145,7 +171,7 @@ void Foam::particleDeposit::depositPoint
         // The walk did not settle (concave polyhedra): search this mesh
         // part.  (A point beyond a wall, inlet or outlet face is outside
         // the fluid: no search, most kernel points near walls are.)
-        target = locator_.findCell(t.p, -1);
+        target = locator_.findCell(here.p, -1);
     }
     if (target >= 0)
     {

@@ -10,7 +10,7 @@ import sys
 
 L = 64e-3       # box side [m]
 N_IN = 8        # uniform cells across the centre
-N_OUT = int(os.environ.get("SETTLING_OUTER_CELLS", 6))  # graded cells per side
+N_OUT = 6         # graded cells on each side
 
 
 def main():

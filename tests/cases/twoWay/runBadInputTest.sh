@@ -6,7 +6,7 @@
 # usage: runBadInputTest.sh variant packDir workDir
 #   variants: unknownForceModel unknownDragModel epsilonMinZero
 #             epsilonMinOne unknownModelType subCycles steadyState noPIMPLE
-#             modelBPressureGradient
+#             modelBPressureGradient modelAWithoutPressureGradient
 set -e
 variant=$1
 pack=$2
@@ -43,6 +43,9 @@ case $variant in
     noPIMPLE)
         foamDictionary system/fvSolution -entry PIMPLE -remove > /dev/null
         expect="couplingMode twoWay needs a 'PIMPLE' dictionary in .*fvSolution" ;;
+    modelAWithoutPressureGradient)
+        foamDictionary $props -entry forceModels -set "(gravityBuoyancy)" > /dev/null
+        expect="Keyword 'forceModels' in .*couplingProperties\"? lacks 'pressureGradient', which modelType A needs" ;;
     modelBPressureGradient)
         foamDictionary $props -entry twoWay/modelType -set B > /dev/null
         expect="Force model 'pressureGradient' \(keyword 'forceModels' in .*couplingProperties\"?\) with modelType B" ;;
