@@ -67,6 +67,11 @@ Foam::tmp<Foam::fvVectorMatrix> Foam::averagedFluid::momentum()
 {
     const volScalarField& eps = coupling_.voidfraction();
 
+    // The exchange source is part of the matrix's explicit side, so that
+    // HbyA carries rAU S cell by cell: where the drag (and so rAU) jumps by
+    // orders of magnitude between neighbouring cells, a source taken to the
+    // faces separately (as buoyancy in OpenFOAM's buoyant solvers) would be
+    // weighted by the neighbour's rAU
     tmp<fvVectorMatrix> tUEqn
     (
         fvm::ddt(eps, U_)
@@ -74,6 +79,8 @@ Foam::tmp<Foam::fvVectorMatrix> Foam::averagedFluid::momentum()
       - fvm::laplacian(eps*nu_, U_)
       - fvc::div(eps*nu_*dev2(T(fvc::grad(U_))))
       + fvm::Sp(coupling_.Kexchange(), U_)
+     ==
+        exchangeSource()
     );
     fvVectorMatrix& UEqn = tUEqn.ref();
 
@@ -81,7 +88,7 @@ Foam::tmp<Foam::fvVectorMatrix> Foam::averagedFluid::momentum()
 
     if (pimple_.momentumPredictor())
     {
-        Foam::solve(UEqn == exchangeSource() + pressureTerm());
+        Foam::solve(UEqn == pressureTerm());
     }
     return tUEqn;
 }
@@ -94,36 +101,21 @@ void Foam::averagedFluid::correctPressure(fvVectorMatrix& UEqn)
 
     const volScalarField rAU(1.0/UEqn.A());
     const surfaceScalarField rAUf(fvc::interpolate(rAU));
+
+    // HbyA includes rAU S; at fixed-U boundaries (walls, inlets) it is U's
+    // own value, so no fluid crosses a wall
     const volVectorField HbyA(constrainHbyA(rAU*UEqn.H(), U_, p_));
 
-    // The exchange source enters the flux at the faces, like buoyancy in
-    // OpenFOAM's buoyant solvers: a source that jumps between cells (the
-    // edge of a bed) is then balanced by the pressure gradient face by
-    // face, with no checkerboard in p or U
-    // eps U = eps (HbyA + rAU S) - Dp grad p
-    surfaceScalarField phiHbyA
+    // eps U = eps HbyA - Dp grad p
+    const surfaceScalarField phiHbyA
     (
         "phiHbyA",
-        epsf*(fvc::flux(HbyA) + rAUf*fvc::flux(exchangeSource()))
+        epsf*fvc::flux(HbyA)
         // Rhie-Chow's time-step correction (as in OpenFOAM's compressible
         // solvers, with eps in place of rho): without it the cell
         // velocities decouple from the fluxes at small time steps
       + fvc::interpolate(eps*rAU)*fvc::ddtCorr(eps, U_, phi_)
     );
-
-    // Where U is fixed (walls, inlets) the flux is the boundary's own: the
-    // source term's face value must not make fluid cross a wall
-    surfaceScalarField::Boundary& phiBf = phiHbyA.boundaryFieldRef();
-    forAll(phiBf, patchi)
-    {
-        const fvPatchVectorField& Up = U_.boundaryField()[patchi];
-        if (!Up.coupled() && !Up.assignable())
-        {
-            phiBf[patchi] =
-                epsf.boundaryField()[patchi]
-               *(Up & mesh_.Sf().boundaryField()[patchi]);
-        }
-    }
     const surfaceScalarField Dp
     (
         "Dp",
@@ -143,7 +135,7 @@ void Foam::averagedFluid::correctPressure(fvVectorMatrix& UEqn)
         {
             phi_ = phiHbyA - pEqn.flux();
 
-            U_ = HbyA + rAU*(exchangeSource() + pressureTerm());
+            U_ = HbyA + rAU*pressureTerm();
             U_.correctBoundaryConditions();
         }
     }
