@@ -87,7 +87,7 @@ endforeach()
 # twoWay.settling: one sphere (d = 100 um, Re_p 8e-5) settling in a closed
 #   box 640 diameters wide, cells of 10 diameters around it, kernel radius
 #   2 cells, self-induced velocity removed: terminal velocity within 2 % of
-#   Stokes' (measured -0.56 %; without the correction +2.4 %).
+#   Stokes' (measured -0.24 %; without the correction +2.8 %).
 # twoWay.settling.parallel: the same on 2 ranks (METIS): within 0.1 % of
 #   the serial run.
 add_test(NAME case.twoWay.settling
