@@ -51,30 +51,6 @@ Foam::particleDeposit::particleDeposit
 }
 
 
-bool Foam::particleDeposit::insideCell
-(
-    const point& x,
-    const scalar r,
-    const label celli
-) const
-{
-    const labelList& own = mesh_.faceOwner();
-    const vectorField& n = locator_.faceNormals();
-    const vectorField& Cf = mesh_.faceCentres();
-
-    for (const label facei : mesh_.cells()[celli])
-    {
-        const scalar sign = (own[facei] == celli) ? 1 : -1;
-        // Distance of x inside the face plane
-        if (-sign*((x - Cf[facei]) & n[facei]) < r)
-        {
-            return false;
-        }
-    }
-    return true;
-}
-
-
 Foam::Ostream& Foam::operator<<(Ostream& os, const depositShare& t)
 {
     os  << t.p << token::SPACE << t.weight << token::SPACE << t.volume
@@ -215,6 +191,13 @@ void Foam::particleDeposit::deposit
     List<DynamicList<depositShare>> toProc(nProcs);
     List<DynamicList<depositShare>> toOrigin(nProcs);
 
+    const cellList& cells = mesh_.cells();
+    const labelList& own = mesh_.faceOwner();
+    const vectorField& faceNormal = locator_.faceNormals();
+    const vectorField& Cf = mesh_.faceCentres();
+    DynamicList<vector> crossedNormal(8);
+    DynamicList<scalar> crossedDist(8);
+
     forAll(x, i)
     {
         const scalar vol = 4.0/3.0*constant::mathematical::pi*pow3(r[i]);
@@ -224,7 +207,23 @@ void Foam::particleDeposit::deposit
 
         depositShare t{x[i], 1.0, vol, K[i], F[i], me, i, celli, -1};
 
-        if (insideCell(x[i], R, celli))
+        // Face planes of the cell that the kernel sphere crosses: outward
+        // normal and the centre's distance inside the plane
+        crossedNormal.clear();
+        crossedDist.clear();
+        for (const label facei : cells[celli])
+        {
+            const vector n =
+                ((own[facei] == celli) ? 1 : -1)*faceNormal[facei];
+            const scalar inside = -((x[i] - Cf[facei]) & n);
+            if (inside < R)
+            {
+                crossedNormal.append(n);
+                crossedDist.append(inside);
+            }
+        }
+
+        if (crossedNormal.empty())
         {
             add(t, celli, solidVolume, dragCoeff, dragForce);
             continue;
@@ -234,9 +233,27 @@ void Foam::particleDeposit::deposit
         t.volume *= share;
         t.dragCoeff *= share;
         t.force *= share;
+        const bool convex = locator_.convex(celli);
         for (const vector& s : satellites_)
         {
             t.p = x[i] + R*s;
+
+            // In a convex cell a point inside the crossed planes is inside
+            // the cell (the other planes are beyond the sphere): no walk
+            bool inCell = convex;
+            forAll(crossedNormal, k)
+            {
+                if (inCell && R*(s & crossedNormal[k]) > crossedDist[k])
+                {
+                    inCell = false;
+                }
+            }
+            if (inCell)
+            {
+                add(t, celli, solidVolume, dragCoeff, dragForce);
+                continue;
+            }
+
             depositPoint
             (
                 t, celli, solidVolume, dragCoeff, dragForce, toProc, toOrigin
