@@ -2,6 +2,8 @@
 #include "demUnits.H"
 #include "particleVTKWriter.H"
 #include "fvcGrad.H"
+#include "fvcLaplacian.H"
+#include "fvcDiv.H"
 #include "zeroGradientFvPatchFields.H"
 #include "mathematicalConstants.H"
 #include "Time.H"
@@ -68,7 +70,7 @@ void Foam::demCoupling::checkTimeStep() const
     c.d = d;
     c.volume = constant::mathematical::pi*pow3(d)/6;
     c.mass = mass;
-    c.v = c.U = c.gradp = c.g = Zero;
+    c.v = c.U = c.gradp = c.divTau = c.g = Zero;
     c.eps = 1;
     c.rho = props_.rhoFluid();
     c.mu = props_.muFluid();
@@ -380,20 +382,16 @@ void Foam::demCoupling::checkForceModels() const
 
     for (const forceModel& model : forces_)
     {
-        if (!model.needsPressureGradient())
-        {
-            continue;
-        }
-        if (props_.modelB())
+        if (model.modelAOnly() && props_.modelB())
         {
             FatalIOErrorInFunction(props_)
                 << "Force model '" << model.type() << "' (keyword"
                 << " 'forceModels' in " << props_.objectPath() << ") with"
                 << " modelType B: Model B's drag (K/eps) carries the"
-                << " pressure gradient; remove it, or use modelType A"
-                << exit(FatalIOError);
+                << " pressure and viscous forces; remove it, or use"
+                << " modelType A" << exit(FatalIOError);
         }
-        if (!p_)
+        if (model.needsPressureGradient() && !p_)
         {
             FatalIOErrorInFunction(props_)
                 << "Force model '" << model.type() << "' (keyword"
@@ -638,12 +636,20 @@ void Foam::demCoupling::updateForces()
             UInterp_.update();
         }
 
-        tmp<volVectorField> tgradp;
+        tmp<volVectorField> tgradp, tdivTau;
         for (const forceModel& model : forces_)
         {
             if (model.needsPressureGradient() && !tgradp.valid())
             {
                 tgradp = props_.rhoFluid()*fvc::grad(*p_);
+            }
+            if (model.needsViscousStress() && !tdivTau.valid())
+            {
+                // div(mu (grad U + grad U^T)) [Pa/m]
+                const volVectorField& Uf = UInterp_.field();
+                tdivTau =
+                    props_.muFluid()
+                   *(fvc::laplacian(Uf) + fvc::div(T(fvc::grad(Uf))));
             }
         }
 
@@ -666,6 +672,9 @@ void Foam::demCoupling::updateForces()
               ? UInterp_.interpolate(x, celli) : vector::zero;
             c.gradp =
                 (celli >= 0 && tgradp.valid()) ? tgradp()[celli] : vector::zero;
+            c.divTau =
+                (celli >= 0 && tdivTau.valid())
+              ? tdivTau()[celli] : vector::zero;
             c.eps =
                 (celli >= 0 && voidfraction_.valid())
               ? voidfraction_()[celli] : 1.0;
@@ -686,7 +695,7 @@ void Foam::demCoupling::updateForces()
             return F;
         };
 
-        tmp<vectorField> sampledU, sampledGradp;
+        tmp<vectorField> sampledU, sampledGradp, sampledDivTau;
         tmp<scalarField> sampledEps;
         if (props_.twoWay())
         {
@@ -698,6 +707,10 @@ void Foam::demCoupling::updateForces()
             if (tgradp.valid())
             {
                 sampledGradp = deposit_.sample(tgradp());
+            }
+            if (tdivTau.valid())
+            {
+                sampledDivTau = deposit_.sample(tdivTau());
             }
         }
 
@@ -724,6 +737,10 @@ void Foam::demCoupling::updateForces()
             if (sampledGradp.valid())
             {
                 c.gradp = sampledGradp()[k];
+            }
+            if (sampledDivTau.valid())
+            {
+                c.divTau = sampledDivTau()[k];
             }
             scalar K = drag_->K(c);
             if (props_.modelB())
