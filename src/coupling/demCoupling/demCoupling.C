@@ -32,6 +32,28 @@ std::string defineVariable(const char* name, const double value)
 
 // * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * //
 
+Foam::particleContext Foam::demCoupling::restContext
+(
+    const scalar radius,
+    const scalar mass,
+    const vector& v
+) const
+{
+    particleContext c;
+    c.d = 2*radius;
+    c.volume = 4.0/3.0*constant::mathematical::pi*pow3(radius);
+    c.mass = mass;
+    c.v = v;
+    c.U = c.gradp = c.divTau = Zero;
+    c.eps = 1;
+    c.rho = props_.rhoFluid();
+    c.mu = props_.muFluid();
+    c.g = g_.value();
+    c.cell = -1;
+    return c;
+}
+
+
 void Foam::demCoupling::checkTimeStep() const
 {
     const Time& runTime = mesh_.time();
@@ -66,16 +88,7 @@ void Foam::demCoupling::checkTimeStep() const
     const scalar d = props_.particleDiameter();
     const scalar mass =
         props_.particleDensity()*constant::mathematical::pi*pow3(d)/6;
-    particleContext c;
-    c.d = d;
-    c.volume = constant::mathematical::pi*pow3(d)/6;
-    c.mass = mass;
-    c.v = c.U = c.gradp = c.divTau = c.g = Zero;
-    c.eps = 1;
-    c.rho = props_.rhoFluid();
-    c.mu = props_.muFluid();
-    c.cell = -1;
-    const scalar tau = mass/drag_->K(c);
+    const scalar tau = mass/drag_->K(restContext(0.5*d, mass, Zero));
     Info<< "Time-step limit, Stokes relaxation time m/K of the particles: "
         << tau << " s; DEM timeStep " << props_.demTimeStep() << " s is "
         << props_.demTimeStep()/tau << " of it (the DEM prints its own"
@@ -653,20 +666,14 @@ void Foam::demCoupling::updateForces()
             }
         }
 
-        const scalar rho = props_.rhoFluid();
         const scalar mu = props_.muFluid();
-        const vector& g = g_.value();
 
         // Context of a particle; eps = 1, U = 0, no grad(p) outside the
         // fluid or without two-way coupling
         auto context = [&](const scalar radius, const scalar mass,
             const vector& v, const label celli, const point& x)
         {
-            particleContext c;
-            c.d = 2*radius;
-            c.volume = 4.0/3.0*constant::mathematical::pi*pow3(radius);
-            c.mass = mass;
-            c.v = v;
+            particleContext c = restContext(radius, mass, v);
             c.U =
                 (celli >= 0 && !kernelU)
               ? UInterp_.interpolate(x, celli) : vector::zero;
@@ -678,9 +685,6 @@ void Foam::demCoupling::updateForces()
             c.eps =
                 (celli >= 0 && voidfraction_.valid())
               ? voidfraction_()[celli] : 1.0;
-            c.rho = rho;
-            c.mu = mu;
-            c.g = g;
             c.cell = celli;
             return c;
         };
@@ -716,8 +720,9 @@ void Foam::demCoupling::updateForces()
 
         // On the owning ranks: the records
         const label nRec = records_.position.size();
-        scalarList recK(nRec);
-        List<vector> recU(nRec), recF(nRec);
+        // What goes back to each particle, in one exchange: K [kg/s],
+        // U [m/s], explicit force [N]
+        List<FixedList<scalar, 7>> answer(nRec);
         scalar tauMin = GREAT;
         for (label k = 0; k < nRec; ++k)
         {
@@ -770,9 +775,9 @@ void Foam::demCoupling::updateForces()
                 K /= 1 - Kg;
             }
             tauMin = min(tauMin, c.mass/K);
-            recK[k] = K;
-            recU[k] = c.U;
-            recF[k] = explicitForce(c);
+            const vector F = explicitForce(c);
+            answer[k] = FixedList<scalar, 7>
+            ({K, c.U.x(), c.U.y(), c.U.z(), F.x(), F.y(), F.z()});
         }
 
         // Back on the particles' ranks
@@ -786,11 +791,8 @@ void Foam::demCoupling::updateForces()
         double** fExplicit = dem.vectorProperty("dragforce");
         double** x0 = dem.vectorProperty("colloidX0");
 
-        scalarList K(n, 0.0);
-        List<vector> Up(n, Zero), F(n, Zero);
-        records_.answer(recK, K);
-        records_.answer(recU, Up);
-        records_.answer(recF, F);
+        List<FixedList<scalar, 7>> perParticle(n, FixedList<scalar, 7>(0.0));
+        records_.answer(answer, perParticle);
 
         label nOutside = 0;
         for (int i = 0; i < n; ++i)
@@ -805,13 +807,17 @@ void Foam::demCoupling::updateForces()
                     demUnits::velocity*vector(v[i][0], v[i][1], v[i][2]),
                     -1, point::zero
                 );
-                F[i] = explicitForce(c);
+                const vector F = explicitForce(c);
+                perParticle[i][4] = F.x();
+                perParticle[i][5] = F.y();
+                perParticle[i][6] = F.z();
             }
-            Ksl[i] = K[i]/demUnits::dragCoeff;
+            const FixedList<scalar, 7>& a = perParticle[i];
+            Ksl[i] = a[0]/demUnits::dragCoeff;
             for (direction k = 0; k < 3; ++k)
             {
-                uf[i][k] = Up[i][k]/demUnits::velocity;
-                fExplicit[i][k] = F[i][k]/demUnits::force;
+                uf[i][k] = a[1 + k]/demUnits::velocity;
+                fExplicit[i][k] = a[4 + k]/demUnits::force;
             }
             dem.unwrapped(i, x0[i]);
         }
