@@ -14,6 +14,21 @@ import random
 import sys
 
 
+def write_data(out, pts, d, box, title):
+    """LIGGGHTS data file (atom_style sphere, one atom type, density 2.5
+    pg/um^3: the case sets the real one) of spheres of diameter d at pts
+    in the box [0, box[k]]."""
+    with open(out, 'w') as f:
+        f.write('LIGGGHTS data file: %s\n\n' % title)
+        f.write('%d atoms\n1 atom types\n\n' % len(pts))
+        for k, axis in enumerate('xyz'):
+            f.write('0 %g %slo %shi\n' % (box[k], axis, axis))
+        f.write('\nAtoms\n\n')
+        for i, p in enumerate(pts):
+            # id type diameter density x y z
+            f.write('%d 1 %g 2.5 %.9f %.9f %.9f\n' % (i + 1, d, p[0], p[1], p[2]))
+
+
 def main():
     out = sys.argv[1]
     n, d = int(sys.argv[2]), float(sys.argv[3])
@@ -59,16 +74,7 @@ def main():
             pts.append(p)
             bins.setdefault(tuple(b), []).append(p)
 
-    with open(out, 'w') as f:
-        f.write('LIGGGHTS data file: %d random spheres (makeSuspension.py)\n\n' % n)
-        f.write('%d atoms\n1 atom types\n\n' % n)
-        for k, axis in enumerate('xyz'):
-            f.write('0 %g %slo %shi\n' % (box[k], axis, axis))
-        f.write('\nAtoms\n\n')
-        for i, p in enumerate(pts):
-            # id type diameter density x y z (atom_style sphere)
-            f.write('%d 1 %g 2.5 %.9f %.9f %.9f\n' % (i + 1, d, p[0], p[1], p[2]))
-
+    write_data(out, pts, d, box, '%d random spheres (makeSuspension.py)' % n)
 
 if __name__ == '__main__':
     main()

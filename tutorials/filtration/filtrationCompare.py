@@ -1,0 +1,118 @@
+"""The two variants side by side, beside seed 002's Table 2 (experiment and
+the paper's 2D simulation): comparison.md (the table) and comparison.png
+(filtrate volume, t/V against V, porosity of the lowest fluid-cell layer:
+seed 002 Fig. 6).  Reads each run's results.txt and filtration.csv
+(filtrationResults.py).
+
+usage: filtrationCompare.py runs/stable runs/flocculated
+"""
+import csv
+import os
+import sys
+
+# Seed 002, Table 2 (glass spheres) and section 4 (contact forces)
+PAPER = {
+    'stable': {'porosity': (0.43, 0.449), 'permeability': (2.47e-14, 3.0e-14),
+               'force': (None, 3.06e-6)},
+    'flocculated': {'porosity': (0.601, 0.654),
+                    'permeability': (13.8e-14, 23.6e-14),
+                    'force': (None, 5.27e-6)},
+    'time_reduction': (-0.51, -0.43),
+}
+
+
+def results(run):
+    out = {}
+    for line in open(os.path.join(run, 'results.txt')):
+        key, value = line.split(None, 1)
+        out[key] = value.strip()
+    return out
+
+
+def series(run):
+    with open(os.path.join(run, 'filtration.csv')) as f:
+        return list(csv.DictReader(f))
+
+
+def fmt(x, scale=1.0, digits=3):
+    return '-' if x is None else '%.*g' % (digits, x*scale)
+
+
+def main():
+    stable, floc = sys.argv[1], sys.argv[2]
+    r = {'stable': results(stable), 'flocculated': results(floc)}
+    t_s = float(r['stable']['filtration_time_s'])
+    t_f = float(r['flocculated']['filtration_time_s'])
+    reduction = t_f/t_s - 1
+
+    lines = [
+        '| quantity | stable: exp. | stable: paper sim. | stable: colloidFoam'
+        ' | flocculated: exp. | flocculated: paper sim. |'
+        ' flocculated: colloidFoam |',
+        '|---|---|---|---|---|---|---|',
+        '| filtration time reduction by flocculation | - | - | - | %s %% |'
+        ' %s %% | %s %% |' % (fmt(PAPER['time_reduction'][0], 100),
+                              fmt(PAPER['time_reduction'][1], 100),
+                              fmt(reduction, 100))]
+    for label, key, pkey, scale, unit in (
+            ('average cake porosity', 'cake_porosity', 'porosity', 1, ''),
+            ('permeability [1e-14 m^2]', 'permeability_m2', 'permeability',
+             1e14, ''),
+            ('mean contact force [uN]', 'mean_contact_force_N', 'force', 1e6,
+             '')):
+        cells = []
+        for v in ('stable', 'flocculated'):
+            exp, sim = PAPER[v][pkey]
+            cells += [fmt(exp, scale), fmt(sim, scale),
+                      fmt(float(r[v][key]), scale)]
+        lines.append('| %s | %s |' % (label, ' | '.join(cells)))
+    for label, key in (('coordination number', 'coordination_number'),
+                       ('filtration time [ms]', 'filtration_time_s'),
+                       ('cake height [um]', 'cake_height_m'),
+                       ('Ruth fit R^2 (t/V against V)', 'ruth_r2'),
+                       ('medium resistance from the fit [1e9 1/m]',
+                        'medium_resistance_fitted_1_m')):
+        scale = {'filtration_time_s': 1e3, 'cake_height_m': 1e6,
+                 'medium_resistance_fitted_1_m': 1e-9}.get(key, 1)
+        lines.append('| %s | - | - | %s | - | - | %s |' % (
+            label, fmt(float(r['stable'][key]), scale, 4),
+            fmt(float(r['flocculated'][key]), scale, 4)))
+    table = '\n'.join(lines) + '\n'
+    with open('comparison.md', 'w') as f:
+        f.write('Filtration at 200 kPa, glass spheres of 5.8 um at 13 %% solids:'
+                ' %s particles per variant.\n\n' % r['stable']['particles'])
+        f.write(table)
+    print(table)
+
+    try:
+        import matplotlib
+        matplotlib.use('Agg')
+        import matplotlib.pyplot as plt
+    except ImportError:
+        print('filtrationCompare.py: no matplotlib (python3-matplotlib): no PNG')
+        return
+    fig, ax = plt.subplots(1, 3, figsize=(15, 4.5))
+    for v, run in (('stable', stable), ('flocculated', floc)):
+        s = series(run)
+        t = [float(x['time_s'])*1e3 for x in s]
+        vol = [float(x['filtrate_m3'])*1e12 for x in s]
+        ax[0].plot(t, vol, 'o-', label=v)
+        pts = [(float(x['filtrate_m3'])*1e12, float(x['t_over_V_s_m3']))
+               for x in s if float(x['filtrate_m3']) > 0
+               and float(x['time_s']) <= float(r[v]['filtration_time_s'])]
+        ax[1].plot([p[0] for p in pts], [p[1] for p in pts], 'o-', label=v)
+        ax[2].plot(t, [float(x['lowest_layer_porosity']) for x in s], 'o-',
+                   label=v)
+    ax[0].set(xlabel='t [ms]', ylabel='filtrate V [nL]', title='Filtrate')
+    ax[1].set(xlabel='V [nL]', ylabel='t/V [s/m^3]',
+              title='t/V against V (to the end of filtration)')
+    ax[2].set(xlabel='t [ms]', ylabel='porosity',
+              title='Lowest fluid-cell layer (seed 002 Fig. 6)')
+    for a in ax:
+        a.legend()
+    fig.tight_layout()
+    fig.savefig('comparison.png', dpi=90)
+
+
+if __name__ == '__main__':
+    main()

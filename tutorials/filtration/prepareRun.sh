@@ -1,0 +1,96 @@
+#!/bin/bash
+# Prepare one filtration run in the current case folder (Allrun runs it in
+# each runs/<variant>/; the tests too), from system/filtrationParameters:
+#   DEM/filtration.liggghts   the DEM's values in its units (um, us, pg)
+#   DEM/suspension.data       the suspension at t = 0, the same for the
+#                             same sizes: stable, single spheres at random
+#                             (makeSuspension.py); flocculated, flocs of
+#                             flocSize spheres (makeFlocs.py); spheres not
+#                             in one floc at least 5 % of a diameter apart
+#   log.timeStep              seed 002's critical step (eq. 12) against
+#                             the DEM step
+#
+#   prepareRun.sh [-testSize]
+#   -testSize: first shrink the model to the tests' size, 58 um across
+#   (10 diameters, 5 cells) with 185.6 um of suspension (794 particles):
+#   a cake of about 7 layers, enough for t/V against V to be straight;
+#   end time 1.2 ms (the filtration ends at about 0.9 ms)
+set -e
+tutorial=$(cd "$(dirname "$0")" && pwd)
+mkdir -p DEM/contacts
+
+case "${1:-}" in
+    "") ;;
+    -testSize)
+        sed -i -e "s/^width .*/width 58;/" -e "s/^nWidth .*/nWidth 5;/" \
+            -e "s/^nUpper .*/nUpper 15;/" system/filtrationParameters
+        foamDictionary system/controlDict -entry endTime -set 1.2e-3 > /dev/null
+        ;;
+    *) echo "usage: $0 [-testSize]" 1>&2; exit 1 ;;
+esac
+
+param()
+{
+    local value
+    value=$(foamDictionary -entry "$1" -value system/filtrationParameters) \
+        && [ -n "$value" ] \
+        || { echo "$0: no '$1' in system/filtrationParameters" 1>&2; exit 1; }
+    echo "$value"
+}
+# The DEM's values in its units (um, nN/um^2 = 1e3 Pa, fJ)
+width=$(param width); height=$(param slurryHeight)
+d=$(param particleDiameter); phi=$(param solidsFraction)
+E=$(param youngsModulus); nu=$(param poissonsRatio)
+e=$(param restitution); mu=$(param friction)
+A=$(param hamakerConstant); zeta=$(param zetaPotential)
+salt=$(param saltConcentration); rhop=$(param particleDensity)
+dt=$(foamDictionary -entry DEM/timeStep -value constant/couplingProperties)
+nc=$(foamDictionary -entry DEM/couplingInterval -value constant/couplingProperties)
+nw=$(foamDictionary -entry writeInterval -value system/controlDict)
+awk -v L="$width" -v H="$height" -v E="$E" -v nu="$nu" -v e="$e" \
+    -v mu="$mu" -v A="$A" -v zeta="$zeta" -v salt="$salt" \
+    -v variant="$(param variant)" -v writeSteps=$((nc*nw)) '
+BEGIN {
+    print "# Written by prepareRun.sh from system/filtrationParameters (units micro)"
+    printf "variable variant string %s\n", variant
+    printf "variable boxWidth equal %.10g\n", L
+    printf "variable boxHeight equal %.10g\n", H
+    printf "variable youngsModulus equal %.10g\n", E*1e-3
+    printf "variable poissonsRatio equal %.10g\n", nu
+    printf "variable restitution equal %.10g\n", e
+    printf "variable friction equal %.10g\n", mu
+    printf "variable hamakerConstant equal %.10g\n", A*1e15
+    printf "variable zetaPotential equal %.10g\n", zeta
+    printf "variable saltConcentration equal %.10g\n", salt
+    printf "variable writeSteps equal %d\n", writeSteps
+}' > DEM/filtration.liggghts
+
+# Time-step limits: seed 002 eq. 12, sqrt(m/k) with k the Hertz
+# contact's stiffness (6 E*^2 R* F)^(1/3) at the paper's mean
+# contact force F = 3.06 uN; the plugin prints its own limits
+# (surface forces, lubrication) in log.liggghts
+awk -v d="$d" -v rho="$rhop" -v E="$E" -v nu="$nu" -v dt="$dt" 'BEGIN {
+    pi = 3.14159265358979; m = rho*pi/6*d^3
+    Es = E/(2*(1 - nu^2)); Rs = d/4; F = 3.06e-6
+    k = (6*Es^2*Rs*F)^(1/3)
+    printf "Critical step (seed 002 eq. 12) sqrt(m/k) = %.3g s " \
+        "(k = %.3g N/m at 3.06 uN); DEM step %g s = 1/%.0f of it\n", \
+        sqrt(m/k), k, dt, sqrt(m/k)/dt
+}' | tee log.timeStep
+
+# The suspension at t = 0: solids fraction of the column
+n=$(awk -v L="$width" -v H="$height" -v d="$d" -v phi="$phi" \
+    'BEGIN { printf "%d", phi*L*L*H/(3.14159265358979/6*(d*1e6)^3) + 0.5 }')
+diameter=$(awk -v d="$d" 'BEGIN { print d*1e6 }')
+if [ "$(param variant)" = flocculated ]
+then
+    # At the isoelectric point the suspension has flocculated for minutes
+    # before it reaches the filter (makeFlocs.py says why)
+    python3 "$tutorial"/makeFlocs.py DEM/suspension.data "$n" "$diameter" \
+        "$width" "$height" "$width" 2718 "$(param flocSize)"
+else
+    python3 "$tutorial"/../twoWay/makeSuspension.py DEM/suspension.data \
+        "$n" "$diameter" "$width" "$height" "$width" 2718 column
+fi
+echo "$n particles at solids fraction $phi in $width x $height x $width um"
+
