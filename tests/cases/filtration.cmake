@@ -23,3 +23,37 @@ add_test(NAME case.filtration.medium
 set_tests_properties(case.filtration.medium PROPERTIES
     TIMEOUT 120 LABELS "case;filtration"
     ENVIRONMENT PYTHONDONTWRITEBYTECODE=1)
+
+# filtration.<variant>: the tutorial at test size (795 particles, 1.2 ms)
+#   from its Allrun: the filtrate flows out at every step, the filtration
+#   ends, t/V against V is straight (Ruth, R^2 >= 0.98), no particle
+#   passes the medium.
+foreach(variant stable flocculated)
+    add_test(NAME case.filtration.${variant}
+        COMMAND ${filtrationDir}/runFiltrationTest.sh ${variant}
+                ${filtrationWork}/${variant})
+    set_tests_properties(case.filtration.${variant} PROPERTIES
+        TIMEOUT 900 LABELS "case;filtration"
+        FIXTURES_SETUP filtration_${variant}
+        ENVIRONMENT PYTHONDONTWRITEBYTECODE=1)
+endforeach()
+
+# filtration.variants: the flocculated cake is looser than the stable one.
+add_test(NAME case.filtration.variants
+    COMMAND python3 ${filtrationDir}/checkVariants.py
+            ${filtrationWork}/stable/runs/stable
+            ${filtrationWork}/flocculated/runs/flocculated)
+set_tests_properties(case.filtration.variants PROPERTIES
+    TIMEOUT 60 LABELS "case;filtration"
+    FIXTURES_REQUIRED "filtration_stable;filtration_flocculated"
+    ENVIRONMENT PYTHONDONTWRITEBYTECODE=1)
+
+# filtration.parallel: the stable variant on 2 ranks (METIS): the filtrate
+#   volume at the end time within 1 % of the serial run's.
+add_test(NAME case.filtration.parallel
+    COMMAND ${filtrationDir}/runFiltrationTest.sh stable
+            ${filtrationWork}/stable_parallel -parallel ${filtrationWork}/stable)
+set_tests_properties(case.filtration.parallel PROPERTIES
+    TIMEOUT 900 LABELS "case;filtration" PROCESSORS 2
+    FIXTURES_REQUIRED filtration_stable
+    ENVIRONMENT PYTHONDONTWRITEBYTECODE=1)

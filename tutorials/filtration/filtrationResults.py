@@ -6,8 +6,7 @@ permeability from Darcy's law, mean contact force and coordination number.
 
 Reads: system/filtrationParameters, constant/couplingProperties,
 postProcessing/filtrate (flux through the bottom), postProcessing/
-lowestLayer (its mean fluid fraction), VTK/particles_*.vtk, DEM/contacts/
-and the last time folder's p (with its cell centres C).
+lowestLayer (its mean fluid fraction), VTK/particles_*.vtk, DEM/contacts/.
 Writes: filtration.csv (time series), filtration.png, results.txt.
 
 Definitions (SI):
@@ -22,8 +21,9 @@ Definitions (SI):
 - Ruth's law t/V = a V + b: a = mu alpha c/(2 A^2 dp), b = mu R_m/(A dp);
   fitted from V = 0.1 V_f (after the start-up) to V_f.  The fitted R_m is
   the filter medium's resistance as the run sees it (compare R_FM).
-- permeability k = mu q (H_c)/dp_cake at the end of the run, dp_cake the
-  drop of p between y = 0 and H_c (cell-layer means, linear in between).
+- permeability k = mu q H_c/dp_cake at the end of the run (Darcy's law
+  across the cake), dp_cake the filtration pressure less the medium's
+  drop mu R_FM q (the suspension is all in the cake by then).
 - contacts: pairs that overlap (DEM/contacts: pairs within the surface
   forces' range are listed too); coordination number 2 N_c/N; mean
   contact force |F| over those pairs (the whole pair force).
@@ -89,33 +89,6 @@ def cap_volume(r, h):
     return math.pi*h*h*(3*r - h)/3
 
 
-def read_internal_field(path):
-    text = open(path).read()
-    i = text.index('internalField')
-    m = re.match(r'internalField\s+nonuniform\s+List<(\w+)>\s*(\d+)\s*\(',
-                 text[i:])
-    if not m:
-        raise SystemExit('filtrationResults.py: %s is not a nonuniform field'
-                         % path)
-    n = int(m.group(2))
-    body = text[i + m.end():]
-    if m.group(1) == 'vector':
-        vals = [[float(x) for x in t.split()] for t in
-                re.findall(r'\(([^()]*)\)', body[:body.index('\n)')])]
-    else:
-        vals = [float(x) for x in body[:body.index(')')].split()]
-    assert len(vals) == n, path
-    return vals
-
-
-def percentile(values, p):
-    s = sorted(values)
-    if not s:
-        return 0.0
-    k = min(len(s) - 1, max(0, int(round(p/100.0*(len(s) - 1)))))
-    return s[k]
-
-
 def main():
     run = sys.argv[1]
     params = os.path.join(run, 'system', 'filtrationParameters')
@@ -124,7 +97,6 @@ def main():
     dp = eval_entry(params, 'filtrationPressure')
     mu = eval_entry(params, 'mu')
     r_fm = eval_entry(params, 'mediumResistance')
-    rho = eval_entry(params, 'rho')
     d = eval_entry(params, 'particleDiameter')
     variant = foam_entry(params, 'variant')
     cpl = os.path.join(run, 'constant', 'couplingProperties')
@@ -228,20 +200,12 @@ def main():
     r_m_fit = b*area*dp/mu
     alpha_c = 2*a*area*area*dp/mu     # specific cake resistance x c [1/m^2]
 
-    # Permeability across the cake at the end: p's layer means
-    last = max((d_ for d_ in os.listdir(run)
-                if re.match(r'^[0-9.e+-]+$', d_) and d_ != '0'), key=float)
-    pk = read_internal_field(os.path.join(run, last, 'p'))
-    cc = read_internal_field(os.path.join(run, last, 'C'))
-    layers = {}
-    for pv, c in zip(pk, cc):
-        layers.setdefault(round(c[1], 9), []).append(pv)
-    ys = sorted(layers)
-    pm = [rho*sum(layers[y])/len(layers[y]) for y in ys]
+    # Permeability across the cake at the end of the run (the suspension
+    # is gone: the pressure difference less the medium's is the cake's)
     t_end = series[-1][0]
     h_end = series[-1][2]
     q_end = at(t_end, t_q, q)/area
-    dp_cake = at(h_end, ys, pm) - at(0.0, ys, pm)
+    dp_cake = dp - mu*r_fm*q_end
     k_perm = mu*q_end*h_end/dp_cake if dp_cake > 0 else float('nan')
     eps_end = series[-1][3]
     z_end, f_end = contacts.get(round(t_end, 12), (float('nan'),)*2)
