@@ -10,6 +10,8 @@ import csv
 import os
 import sys
 
+from filtrationResults import read_results as results  # noqa: E402
+
 # Seed 002, Table 2 (glass spheres) and section 4 (contact forces)
 PAPER = {
     'stable': {'porosity': (0.43, 0.449), 'permeability': (2.47e-14, 3.0e-14),
@@ -19,14 +21,6 @@ PAPER = {
                     'force': (None, 5.27e-6)},
     'time_reduction': (-0.51, -0.43),
 }
-
-
-def results(run):
-    out = {}
-    for line in open(os.path.join(run, 'results.txt')):
-        key, value = line.split(None, 1)
-        out[key] = value.strip()
-    return out
 
 
 def series(run):

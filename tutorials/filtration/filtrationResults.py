@@ -60,6 +60,15 @@ def eval_entry(path, key):
     return float(eval(expr, {'__builtins__': {}, 'round': round}))
 
 
+def read_results(run):
+    """{key: text} of a run's results.txt (written by main())."""
+    out = {}
+    for line in open(os.path.join(run, 'results.txt')):
+        key, value = line.split(None, 1)
+        out[key] = value.strip()
+    return out
+
+
 def read_columns(path):
     rows = []
     for line in open(path):

@@ -14,16 +14,12 @@ import glob
 import os
 import sys
 
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)),
+                                '..', '..', '..', 'tutorials', 'filtration'))
+from filtrationResults import read_results as results  # noqa: E402
+
 R2_MIN = 0.98
 PARALLEL_TOL = 0.01
-
-
-def results(run):
-    out = {}
-    for line in open(os.path.join(run, 'results.txt')):
-        key, value = line.split(None, 1)
-        out[key] = value.strip()
-    return out
 
 
 def flow(run):

@@ -7,13 +7,9 @@ usage: checkVariants.py stableRunDir flocculatedRunDir
 import os
 import sys
 
-
-def results(run):
-    out = {}
-    for line in open(os.path.join(run, 'results.txt')):
-        key, value = line.split(None, 1)
-        out[key] = value.strip()
-    return out
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)),
+                                '..', '..', '..', 'tutorials', 'filtration'))
+from filtrationResults import read_results as results  # noqa: E402
 
 
 def main():
