@@ -57,3 +57,15 @@ set_tests_properties(case.filtration.parallel PROPERTIES
     TIMEOUT 900 LABELS "case;filtration" PROCESSORS 2
     FIXTURES_REQUIRED filtration_stable
     ENVIRONMENT PYTHONDONTWRITEBYTECODE=1)
+
+# filtration.consolidation: the stable test-size cake under a piston at
+#   200, 400, 600, 800, 1000 kPa (DEM alone: the drained equilibrium):
+#   at rest at every step with the piston force within 2 % of pressure x
+#   area, and the packing density rising from step to step.
+add_test(NAME case.filtration.consolidation
+    COMMAND ${filtrationDir}/runConsolidationTest.sh
+            ${filtrationWork}/stable/runs/stable ${filtrationWork}/consolidation)
+set_tests_properties(case.filtration.consolidation PROPERTIES
+    TIMEOUT 900 LABELS "case;filtration"
+    FIXTURES_REQUIRED filtration_stable
+    ENVIRONMENT PYTHONDONTWRITEBYTECODE=1)

@@ -2,7 +2,8 @@
 the paper's 2D simulation): comparison.md (the table) and comparison.png
 (filtrate volume, t/V against V, porosity of the lowest fluid-cell layer:
 seed 002 Fig. 6).  Reads each run's results.txt and filtration.csv
-(filtrationResults.py).
+(filtrationResults.py), and consolidation.txt when both runs have one
+(consolidationResults.py).
 
 usage: filtrationCompare.py runs/stable runs/flocculated
 """
@@ -71,6 +72,20 @@ def main():
         lines.append('| %s | - | - | %s | - | - | %s |' % (
             label, fmt(float(r['stable'][key]), scale, 4),
             fmt(float(r['flocculated'][key]), scale, 4)))
+    cons = {}
+    for v, run in (('stable', stable), ('flocculated', floc)):
+        path = os.path.join(run, 'consolidation.txt')
+        if os.path.exists(path):
+            cons[v] = dict(line.split(None, 1) for line in open(path))
+    if len(cons) == 2:
+        for label, key in (('compressibility index beta (eq. 14)',
+                            'compressibility_index'),
+                           ('p0 of eq. 14 [Pa]', 'p0_Pa'),
+                           ('packing density at 200 ... 1000 kPa',
+                            'packing_densities')):
+            lines.append('| %s | - | - | %s | - | - | %s |' % (
+                label, cons['stable'][key].strip(),
+                cons['flocculated'][key].strip()))
     table = '\n'.join(lines) + '\n'
     with open('comparison.md', 'w') as f:
         f.write('Filtration at 200 kPa, glass spheres of 5.8 um at 13 %% solids:'

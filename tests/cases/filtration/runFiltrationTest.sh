@@ -21,12 +21,12 @@ source "$here/../twoWay/caseFunctions.sh"
 copyCase "$COLLOIDFOAM_TUTORIALS/filtration" "$work"
 if [ "${3:-}" = -parallel ]
 then
-    ./Allrun -variant "$variant" -testSize -parallel > log.Allrun 2>&1 \
+    ./Allrun -variant "$variant" -testSize -parallel -noConsolidation > log.Allrun 2>&1 \
         || { tail -30 log.Allrun; exit 1; }
     python3 "$here/checkFiltration.py" $ruth "runs/$variant-parallel" \
         "$4/runs/$variant"
 else
-    ./Allrun -variant "$variant" -testSize > log.Allrun 2>&1 \
+    ./Allrun -variant "$variant" -testSize -noConsolidation > log.Allrun 2>&1 \
         || { tail -30 log.Allrun; exit 1; }
     python3 "$here/checkFiltration.py" $ruth "runs/$variant"
 fi
