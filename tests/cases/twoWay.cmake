@@ -76,7 +76,8 @@ endforeach()
 #   is written, naming file, keyword and what is allowed.
 foreach(variant unknownForceModel unknownDragModel epsilonMinZero epsilonMinOne
                 unknownModelType subCycles steadyState noPIMPLE
-                modelBPressureGradient modelAWithoutPressureGradient)
+                modelBPressureGradient modelAWithoutPressureGradient
+                epsilonMinAboveBed)
     add_test(NAME case.twoWay.badInput.${variant}
         COMMAND ${twoWayDir}/runBadInputTest.sh ${variant} ${twoWayWork}/pack
                 ${twoWayWork}/badInput_${variant})

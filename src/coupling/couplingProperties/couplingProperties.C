@@ -69,7 +69,8 @@ Foam::couplingProperties::couplingProperties(const objectRegistry& obr)
     modelB_(false),
     epsilonMin_(1),
     kernelRadius_(0),
-    selfInducedVelocity_(false)
+    selfInducedVelocity_(false),
+    clipFluidFraction_(false)
 {
     const dictionary& dict = *this;
 
@@ -142,6 +143,8 @@ Foam::couplingProperties::couplingProperties(const objectRegistry& obr)
                 << ": the correction F/(5 pi mu R) needs a kernel radius R"
                 << " > 0 [m], at least two cell sizes" << exit(FatalIOError);
         }
+        clipFluidFraction_ =
+            tw.getOrDefault<bool>("clipFluidFraction", false);
     }
 
     // Fluid: mu directly, or nu times rho

@@ -513,10 +513,28 @@ void Foam::demCoupling::depositRecords()
         << solid << " m^3 of particles' " << particleVolume
         << " m^3 (relative difference "
         << mag(solid - particleVolume)/max(particleVolume, VSMALL) << ")";
-    if (returnReduce(nClipped, sumOp<label>()))
+    const label nClippedAll = returnReduce(nClipped, sumOp<label>());
+    if (nClippedAll && !props_.clipFluidFraction())
     {
-        Info<< "; " << returnReduce(nClipped, sumOp<label>())
-            << " cells clipped at epsilonMin " << epsMin;
+        // The fluid would no longer hold the particles' volume: stop
+        // rather than go on with a wrong mass balance (a filter cake that
+        // collapsed into one cell did so at 1.74 ms of the filtration
+        // tutorial at default size, and its particles were then blown
+        // off the medium)
+        FatalErrorInFunction
+            << "At time " << mesh_.time().timeName() << " s the particles"
+            << " leave less fluid than twoWay/epsilonMin " << epsMin
+            << " in " << nClippedAll << " cells (lowest "
+            << gMin(1 - solidVolume/V) << ") of constant/couplingProperties:"
+            << " the fluid fraction would be clipped and the fluid would no"
+            << " longer hold the particles' volume.  Lower epsilonMin (in"
+            << " (0, 1)), spread the particles over more of the mesh"
+            << " (twoWay/kernelRadius [m]), or set twoWay/clipFluidFraction"
+            << " yes to clip and go on" << exit(FatalError);
+    }
+    if (nClippedAll)
+    {
+        Info<< "; " << nClippedAll << " cells clipped at epsilonMin " << epsMin;
     }
     const vector onParticles = gSum(records_.dragForce);
     const vector onFluid = -gSum(Fc);

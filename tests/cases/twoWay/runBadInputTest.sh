@@ -7,6 +7,8 @@
 #   variants: unknownForceModel unknownDragModel epsilonMinZero
 #             epsilonMinOne unknownModelType subCycles steadyState noPIMPLE
 #             modelBPressureGradient modelAWithoutPressureGradient
+#             epsilonMinAboveBed (the bed's cells, eps ~ 0.39, below
+#             epsilonMin 0.5: the fluid fraction would be clipped)
 set -e
 variant=$1
 pack=$2
@@ -49,6 +51,9 @@ case $variant in
     modelBPressureGradient)
         foamDictionary $props -entry twoWay/modelType -set B > /dev/null
         expect="Force model 'pressureGradient' \(keyword 'forceModels' in .*couplingProperties\"?\) with modelType B" ;;
+    epsilonMinAboveBed)
+        foamDictionary $props -entry twoWay/epsilonMin -set 0.5 > /dev/null
+        expect="the particles leave less fluid than twoWay/epsilonMin 0.5 in [0-9]+ cells \(lowest 0\.[0-9]+\) of constant/couplingProperties" ;;
     *)  echo "unknown variant $variant"; exit 2 ;;
 esac
 
