@@ -12,7 +12,9 @@ import re
 import sys
 
 here = os.path.dirname(os.path.abspath(__file__))
-sys.path.insert(0, os.path.join(here, '..', 'twoWay'))
+# makeSuspension.py of the twoWay tutorials (also from a copy of this case)
+sys.path.insert(0, os.path.join(os.environ.get(
+    'COLLOIDFOAM_TUTORIALS', os.path.join(here, '..')), 'twoWay'))
 from filtrationResults import read_vtk, eval_entry  # noqa: E402
 from makeSuspension import write_data  # noqa: E402
 

@@ -25,8 +25,10 @@ import os
 import random
 import sys
 
-sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)),
-                                '..', 'twoWay'))
+# makeSuspension.py of the twoWay tutorials (also from a copy of this case)
+sys.path.insert(0, os.path.join(os.environ.get(
+    'COLLOIDFOAM_TUTORIALS',
+    os.path.join(os.path.dirname(os.path.abspath(__file__)), '..')), 'twoWay'))
 from makeSuspension import write_data  # noqa: E402
 
 

@@ -89,7 +89,8 @@ then
     python3 "$tutorial"/makeFlocs.py DEM/suspension.data "$n" "$diameter" \
         "$width" "$height" "$width" 2718 "$(param flocSize)"
 else
-    python3 "$tutorial"/../twoWay/makeSuspension.py DEM/suspension.data \
+    python3 "${COLLOIDFOAM_TUTORIALS:-$tutorial/..}"/twoWay/makeSuspension.py \
+        DEM/suspension.data \
         "$n" "$diameter" "$width" "$height" "$width" 2718 column
 fi
 echo "$n particles at solids fraction $phi in $width x $height x $width um"
