@@ -148,13 +148,11 @@ Foam::PtrList<Foam::surfaceScalarField> Foam::averagedFluid::faceConductances
 
 void Foam::averagedFluid::seriesFluxes
 (
-    const volScalarField& rAU,
-    const volVectorField& HbyA,
+    const PtrList<surfaceScalarField>& faces,
     surfaceScalarField& phiX,
     surfaceScalarField& Dp
 ) const
 {
-    const PtrList<surfaceScalarField> faces(faceConductances(rAU, HbyA));
     const surfaceScalarField& aOwn = faces[AOWN];
     const surfaceScalarField& aNei = faces[ANEI];
     const surfaceScalarField& xOwn = faces[XOWN];
@@ -188,11 +186,9 @@ void Foam::averagedFluid::seriesFluxes
 
 Foam::tmp<Foam::volVectorField> Foam::averagedFluid::pressureTerm
 (
-    const volScalarField& rAU,
-    const volVectorField& HbyA
+    const PtrList<surfaceScalarField>& faces
 ) const
 {
-    const PtrList<surfaceScalarField> faces(faceConductances(rAU, HbyA));
     const surfaceScalarField& aOwn = faces[AOWN];
     const surfaceScalarField& aNei = faces[ANEI];
     const surfaceScalarField& xOwn = faces[XOWN];
@@ -276,7 +272,7 @@ Foam::tmp<Foam::fvVectorMatrix> Foam::averagedFluid::momentum()
     {
         const volScalarField rAU(1.0/UEqn.A());
         const volVectorField HbyA(constrainHbyA(rAU*UEqn.H(), U_, p_));
-        Foam::solve(UEqn == pressureTerm(rAU, HbyA));
+        Foam::solve(UEqn == pressureTerm(faceConductances(rAU, HbyA)));
         fvOptions_.correct(U_);
     }
     return tUEqn;
@@ -307,7 +303,10 @@ void Foam::averagedFluid::correctPressure(fvVectorMatrix& UEqn)
         mesh_,
         dimensionedScalar("Dp", mobility(rAU)().dimensions(), 0)
     );
-    seriesFluxes(rAU, HbyA, phiX, Dp);
+    // The faces' conductances, once for the fluxes and the cells'
+    // pressure term of this correction
+    const PtrList<surfaceScalarField> faces(faceConductances(rAU, HbyA));
+    seriesFluxes(faces, phiX, Dp);
 
     const surfaceScalarField phiHbyA
     (
@@ -332,7 +331,7 @@ void Foam::averagedFluid::correctPressure(fvVectorMatrix& UEqn)
         {
             phi_ = phiHbyA - pEqn.flux();
 
-            U_ = HbyA + rAU*pressureTerm(rAU, HbyA);
+            U_ = HbyA + rAU*pressureTerm(faces);
             U_.correctBoundaryConditions();
             fvOptions_.correct(U_);
         }
