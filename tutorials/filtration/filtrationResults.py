@@ -6,7 +6,8 @@ permeability from Darcy's law, mean contact force and coordination number.
 
 Reads: system/filtrationParameters, constant/couplingProperties,
 postProcessing/filtrate (flux through the bottom), postProcessing/
-lowestLayer (its mean fluid fraction), VTK/particles_*.vtk, DEM/contacts/.
+lowestLayer (its mean fluid fraction), <time>/lagrangian/particles,
+DEM/contacts/.
 Writes: filtration.csv (time series), filtration.png, results.txt.
 
 Definitions (SI):
@@ -35,6 +36,11 @@ import math
 import os
 import re
 import sys
+
+sys.path.insert(0, os.path.join(os.environ.get(
+    'COLLOIDFOAM_DIR', os.path.join(os.path.dirname(os.path.abspath(__file__)),
+                                    '..', '..')), 'src', 'python'))
+import particleCloud  # noqa: E402
 
 SOLIDS_CUT = 0.3    # solids fraction at the cake's top: suspension 0.13,
                     # cakes 0.35 ... 0.6
@@ -78,18 +84,13 @@ def read_columns(path):
     return rows
 
 
-def read_vtk(path):
-    """time [s], positions and velocities [m, m/s], radii [m]."""
-    lines = open(path).read().split('\n')
-    time = float(re.search(r'time (\S+) s', lines[1]).group(1))
-    i = next(k for k, l in enumerate(lines) if l.startswith('POINTS'))
-    n = int(lines[i].split()[1])
-    pos = [[float(x) for x in lines[i + 1 + k].split()] for k in range(n)]
-    j = next(k for k, l in enumerate(lines) if l.startswith('VECTORS velocity'))
-    vel = [[float(x) for x in lines[j + 1 + k].split()] for k in range(n)]
-    j = next(k for k, l in enumerate(lines) if l.startswith('SCALARS radius'))
-    rad = [float(lines[j + 2 + k]) for k in range(n)]
-    return time, pos, vel, rad
+def read_particles(path):
+    """time [s], positions and velocities [m, m/s], radii [m] of the
+    particles of one write time (particleCloud: the solver's lagrangian
+    cloud, serial, reconstructed or per processor)."""
+    data = particleCloud.read(path)
+    return (particleCloud.time(path), data['position'], data['velocity'],
+            data['radius'])
 
 
 def cap_volume(r, h):
@@ -137,10 +138,7 @@ def main():
     # medium, its top H_c where the profile first falls through SOLIDS_CUT
     # going up (between the suspension's and a cake's); a particle belongs
     # to the cake when its centre is below H_c + d
-    snaps = []
-    for path in glob.glob(os.path.join(run, 'VTK', 'particles_*.vtk')):
-        snaps.append(read_vtk(path))
-    snaps.sort(key=lambda s: s[0])
+    snaps = [read_particles(path) for path in particleCloud.write_times(run)]
     n_particles = len(snaps[0][1])
     below = 0
     series = []

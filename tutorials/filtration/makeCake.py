@@ -1,31 +1,26 @@
 """The cake of a finished filtration run, for consolidation: the particles
-of its last write (VTK/particles_*.vtk) at rest in DEM/cake.data (LIGGGHTS
+of its last write (<time>/lagrangian/particles) at rest in DEM/cake.data (LIGGGHTS
 data file, units micro, the run's box up to just above the piston) and
 the piston, a plate over the whole cross-section 0.05 um above the
 highest particle, in DEM/piston.stl.  Prints the plate's height [um].
 
 usage: makeCake.py runDir
 """
-import glob
 import os
-import re
 import sys
 
 here = os.path.dirname(os.path.abspath(__file__))
 # makeSuspension.py of the twoWay tutorials (also from a copy of this case)
 sys.path.insert(0, os.path.join(os.environ.get(
     'COLLOIDFOAM_TUTORIALS', os.path.join(here, '..')), 'twoWay'))
-from filtrationResults import read_vtk, eval_entry  # noqa: E402
+from filtrationResults import read_particles, eval_entry  # noqa: E402
+import particleCloud  # noqa: E402
 from makeSuspension import write_data  # noqa: E402
 
 
 def main():
     run = sys.argv[1]
-    files = glob.glob(os.path.join(run, 'VTK', 'particles_*.vtk'))
-    if not files:
-        raise SystemExit('makeCake.py: no VTK/particles_*.vtk in %s' % run)
-    last = max(files, key=lambda p: int(re.search(r'_(\d+)\.vtk$', p).group(1)))
-    time, pos, vel, rad = read_vtk(last)
+    time, pos, vel, rad = read_particles(particleCloud.latest(run))
     um = 1e6
     width = eval_entry(os.path.join(run, 'system', 'filtrationParameters'),
                        'width')

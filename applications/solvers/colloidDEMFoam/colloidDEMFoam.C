@@ -15,9 +15,9 @@ Description
     averaged Navier-Stokes, Model A or B, PIMPLE), and the forces of the
     next interval are taken from it.
 
-    Output: the fluid fields (two-way: with voidfraction) in the time
-    folders, the particles in VTK/particles_<timeIndex>.vtk, the DEM log in
-    log.liggghts.
+    Output: the fluid fields (two-way: with voidfraction) and the particles
+    (lagrangian cloud <time>/lagrangian/particles, per rank) in the time
+    folders, the DEM log in log.liggghts.
 
     LIGGGHTS contact models of the project's plugin are registered when
     the plugin library is loaded, e.g. with

@@ -1,6 +1,6 @@
 #include "demCoupling.H"
 #include "demUnits.H"
-#include "particleVTKWriter.H"
+#include "particleCloudWriter.H"
 #include "fvcGrad.H"
 #include "fvcLaplacian.H"
 #include "fvcDiv.H"
@@ -912,77 +912,35 @@ void Foam::demCoupling::write()
         const double* contacts =
             dem.hasPairStyle() ? dem.computePerAtom("colloidContacts") : nullptr;
 
-        const label nProcs = Pstream::nProcs();
-        const label me = Pstream::myProcNo();
-        List<pointField> allPosition(nProcs);
-        List<vectorField> allVelocity(nProcs);
-        List<scalarField> allRadius(nProcs);
-        List<labelList> allTouchP(nProcs);
-        List<labelList> allTouchW(nProcs);
+        const int* tag = dem.tag();
 
-        allPosition[me] = position;
-        allVelocity[me].setSize(n);
-        allRadius[me].setSize(n);
-        allTouchP[me].setSize(n);
-        allTouchW[me].setSize(n);
+        particleCloudWriter::particles out;
+        out.proc = proc;
+        out.cell = cell;
+        out.position = position;
+        out.id.setSize(n);
+        out.velocity.setSize(n);
+        out.diameter.setSize(n);
+        out.nContacts.setSize(n);
+        out.touchingWall.setSize(n);
         for (int i = 0; i < n; ++i)
         {
             const scalar radius = demUnits::length*r[i];
-            allVelocity[me][i] =
+            out.id[i] = tag[i];
+            out.velocity[i] =
                 demUnits::velocity*vector(v[i][0], v[i][1], v[i][2]);
-            allRadius[me][i] = radius;
-            allTouchP[me][i] = (contacts && contacts[i] > 0) ? 1 : 0;
-            allTouchW[me][i] =
+            out.diameter[i] = 2*radius;
+            out.nContacts[i] = contacts ? label(std::lround(contacts[i])) : 0;
+            out.touchingWall[i] =
                 (wallDist[i] <= (1 + touchTolerance_)*radius) ? 1 : 0;
         }
 
-        // Output only: particles gathered on the master for one file
-        Pstream::gatherList(allPosition);
-        Pstream::gatherList(allVelocity);
-        Pstream::gatherList(allRadius);
-        Pstream::gatherList(allTouchP);
-        Pstream::gatherList(allTouchW);
-
         const label nPresent = returnReduce(label(n), sumOp<label>());
+        const label nWritten =
+            particleCloudWriter::write(mesh_, cloudName_, out);
 
         // The searches of this output are not those of a coupling step
         locator_.nGlobalSearches();
-
-        if (Pstream::master())
-        {
-            const Time& runTime = mesh_.time();
-            const fileName file
-            (
-                runTime.globalPath()/"VTK"
-               /("particles_" + Foam::name(runTime.timeIndex()) + ".vtk")
-            );
-
-            particleVTKWriter::write
-            (
-                file,
-                "colloidDEMFoam particles, time " + runTime.timeName() + " s",
-                ListListOps::combine<pointField>
-                (
-                    allPosition, accessOp<pointField>()
-                ),
-                ListListOps::combine<vectorField>
-                (
-                    allVelocity, accessOp<vectorField>()
-                ),
-                ListListOps::combine<scalarField>
-                (
-                    allRadius, accessOp<scalarField>()
-                ),
-                ListListOps::combine<labelList>
-                (
-                    allTouchP, accessOp<labelList>()
-                ),
-                ListListOps::combine<labelList>
-                (
-                    allTouchW, accessOp<labelList>()
-                )
-            );
-        }
 
         // Removed: counted by the DEM's outflow fixes (massflow/mesh with
         // delete_atoms yes), independently of the two other counts
@@ -991,7 +949,9 @@ void Foam::demCoupling::write()
 
         Info<< "Particles: present " << nPresent
             << ", inserted " << nInserted_
-            << ", removed " << nRemoved << endl;
+            << ", removed " << nRemoved << "; written " << nWritten
+            << " (lagrangian/" << cloudName_ << "), "
+            << nPresent - nWritten << " outside the fluid" << endl;
 
         if (nPresent != nInserted_ - nRemoved)
         {

@@ -263,6 +263,12 @@ long Foam::liggghtsEngine::nGlobal() const
 }
 
 
+const int* Foam::liggghtsEngine::tag() const
+{
+    return engine(lmp_)->atom->tag;
+}
+
+
 double** Foam::liggghtsEngine::x() const
 {
     return engine(lmp_)->atom->x;

@@ -1,24 +1,7 @@
 #include "particleRecords.H"
 #include "PstreamBuffers.H"
+#include "listPick.H"
 #include "DynamicList.H"
-
-namespace
-{
-
-// Elements idx of a list
-template<class Type>
-Foam::List<Type> pick(const Foam::UList<Type>& all, const Foam::labelList& idx)
-{
-    Foam::List<Type> out(idx.size());
-    forAll(idx, k)
-    {
-        out[k] = all[idx[k]];
-    }
-    return out;
-}
-
-} // End anonymous namespace
-
 
 void Foam::particleRecords::gather
 (
@@ -59,13 +42,13 @@ void Foam::particleRecords::gather
     if (!Pstream::parRun())
     {
         const labelList& idx = sentIndex_[0];
-        p[0] = pick(localPosition, idx);
-        c[0] = pick(cellOnProc, idx);
-        r[0] = pick(localRadius, idx);
-        m[0] = pick(localMass, idx);
-        v[0] = pick(localVelocity, idx);
-        K[0] = pick(localDragCoeff, idx);
-        F[0] = pick(localDragForce, idx);
+        p[0] = listPick(localPosition, idx);
+        c[0] = listPick(cellOnProc, idx);
+        r[0] = listPick(localRadius, idx);
+        m[0] = listPick(localMass, idx);
+        v[0] = listPick(localVelocity, idx);
+        K[0] = listPick(localDragCoeff, idx);
+        F[0] = listPick(localDragForce, idx);
     }
     else
     {
@@ -76,10 +59,10 @@ void Foam::particleRecords::gather
             if (idx.size())
             {
                 UOPstream os(proci, buffers);
-                os  << pick(localPosition, idx) << pick(cellOnProc, idx)
-                    << pick(localRadius, idx) << pick(localMass, idx)
-                    << pick(localVelocity, idx) << pick(localDragCoeff, idx)
-                    << pick(localDragForce, idx);
+                os  << listPick(localPosition, idx) << listPick(cellOnProc, idx)
+                    << listPick(localRadius, idx) << listPick(localMass, idx)
+                    << listPick(localVelocity, idx) << listPick(localDragCoeff, idx)
+                    << listPick(localDragForce, idx);
             }
         }
         labelList sizes;

@@ -8,9 +8,12 @@ usage: checkCrossing.py serialCase parallelCase
 """
 import math
 import re
+import os
 import sys
 
-import particleVTK
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)),
+                                '..', '..', '..', 'src', 'python'))  # particleCloud
+import particleCloud  # noqa: E402
 
 X_CROSSED = 55e-6
 MAX_GLOBAL_SEARCHES = 3
@@ -34,8 +37,8 @@ def main():
     if searches > MAX_GLOBAL_SEARCHES:
         print("FAIL: more than %d global searches" % MAX_GLOBAL_SEARCHES); ok = False
 
-    dp = particleVTK.read(particleVTK.latest(parallel))
-    ds = particleVTK.read(particleVTK.latest(serial))
+    dp = particleCloud.read(particleCloud.latest(parallel))
+    ds = particleCloud.read(particleCloud.latest(serial))
     x = dp["position"][0][0]
     print("final x = %.6g m (processor boundary at 5e-05 m)" % x)
     if x < X_CROSSED:

@@ -17,9 +17,12 @@ usage: checkSettling.py caseDir H Umax
 """
 import math
 import re
+import os
 import sys
 
-import particleVTK
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)),
+                                '..', '..', '..', 'src', 'python'))  # particleCloud
+import particleCloud  # noqa: E402
 
 TOL = 0.01
 
@@ -46,11 +49,11 @@ def main():
     vs = (rho_p - rho_f)*g*d**2/(18*mu)
     ok = True
 
-    for path in particleVTK.all_files(case):
-        t = particleVTK.time(path)
+    for path in particleCloud.write_times(case):
+        t = particleCloud.time(path)
         if t <= 0:
             continue
-        data = particleVTK.read(path)
+        data = particleCloud.read(path)
         if len(data["position"]) != 1:
             sys.exit("checkSettling: expected 1 particle, found %d" % len(data["position"]))
         y = data["position"][0][1]

@@ -7,15 +7,18 @@ itself, x and z relative to |v|).
 usage: compareRuns.py hexCase otherCase...
 """
 import math
+import os
 import sys
 
-import particleVTK
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)),
+                                '..', '..', '..', 'src', 'python'))  # particleCloud
+import particleCloud  # noqa: E402
 
 TOL = 0.01
 
 
 def velocity(case):
-    return particleVTK.read(particleVTK.latest(case))["velocity"][0]
+    return particleCloud.read(particleCloud.latest(case))["velocity"][0]
 
 
 def main():

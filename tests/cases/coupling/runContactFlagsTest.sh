@@ -29,11 +29,11 @@ postProcess -func writeCellCentres -time 0 > log.writeCellCentres 2>&1
 python3 "$here/setPoiseuilleU.py" . 1e-4 1e-3
 colloidDEMFoam > log.colloidDEMFoam 2>&1 || { tail -30 log.colloidDEMFoam; exit 1; }
 
-python3 - "$work/VTK/particles_0.vtk" "$here" <<'PYEOF'
+python3 - "$work/0" "$here" <<'PYEOF'
 import sys
-sys.path.insert(0, sys.argv[2])
-import particleVTK
-d = particleVTK.read(sys.argv[1])
+sys.path.insert(0, sys.argv[2] + '/../../../src/python')
+import particleCloud
+d = particleCloud.read(sys.argv[1])
 expected = {  # x [um] -> (touchingParticle, touchingWall)
     20: (1, 0), 21.002: (1, 0), 60: (0, 1), 40: (0, 0), 41.1: (0, 0), 80: (0, 0)}
 ok = len(d["position"]) == 6

@@ -11,7 +11,11 @@ here=$(cd "$(dirname "$0")" && pwd)
 source "$here/../twoWay/caseFunctions.sh"
 rm -rf "$work"
 mkdir -p "$work"
-cp -r "$run"/system "$run"/constant "$run"/DEM "$run"/VTK "$work"/
+latest=$(foamListTimes -case "$run" -latestTime -noZero | tail -1)
+[ -d "$run/$latest/lagrangian" ] || { echo "no particles at $run/$latest" 1>&2; exit 1; }
+mkdir -p "$work/$latest"
+cp -r "$run"/system "$run"/constant "$run"/DEM "$work"/
+cp -r "$run/$latest/lagrangian" "$work/$latest"/
 cd "$work"
 "$COLLOIDFOAM_TUTORIALS/filtration/consolidate.sh" > log.consolidate 2>&1 \
     || { tail -30 log.consolidate; exit 1; }

@@ -26,10 +26,10 @@ import re
 import sys
 
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)),
-                                "..", "coupling"))
-import particleVTK  # noqa: E402
+                                '..', '..', '..', 'src', 'python'))  # particleCloud
+import particleCloud  # noqa: E402
 
-LINE = re.compile(r"Particles: present (\d+), inserted (\d+), removed (\d+)")
+LINE = re.compile(r"Particles: present (\d+), inserted (\d+), removed (\d+); written (\d+)")
 
 
 def liggghtsVariables(path):
@@ -52,15 +52,15 @@ def main():
           "run reached endTime %g s (last time %s)" % (endTime, times[-1] if times else "none"))
 
     counts = [tuple(int(g) for g in m.groups()) for m in LINE.finditer(log)]
-    files = particleVTK.all_files(case)
+    files = particleCloud.write_times(case)
     check(len(counts) == len(files) and len(counts) > 2,
           "%d writes, %d particle files" % (len(counts), len(files)))
-    for (present, inserted, removed), path in zip(counts, files):
-        nFile = len(particleVTK.read(path)["position"])
-        check(present == inserted - removed and nFile == present,
-              "%-20s present %d = inserted %d - removed %d; file %d"
-              % (os.path.basename(path), present, inserted, removed, nFile))
-    present, inserted, removed = counts[-1]
+    for (present, inserted, removed, written), path in zip(counts, files):
+        nFile = len(particleCloud.read(path)["position"])
+        check(present == inserted - removed and nFile == written == present,
+              "%-20s present %d = inserted %d - removed %d; written %d, read %d"
+              % (os.path.basename(path), present, inserted, removed, written, nFile))
+    present, inserted, removed, written = counts[-1]
 
     g = liggghtsVariables(os.path.join(case, "DEM", "slotCoater.liggghts"))
     params = open(os.path.join(case, "system", "slotCoaterParameters")).read()
@@ -84,7 +84,7 @@ def main():
           "fed %d, expected %d batch(es) of %.2f" % (inserted - fill, nBatches, batch))
     check(removed > 0, "removed %d particles through the outlet" % removed)
 
-    velocity = particleVTK.read(files[-1])["velocity"]
+    velocity = particleCloud.read(files[-1])["velocity"]
     mean = [sum(v[k] for v in velocity)/len(velocity) for k in range(3)]
     with open(os.path.join(case, "bookkeeping.txt"), "w") as f:
         f.write("%d %d %d %.10g %.10g %.10g\n" % ((present, inserted, removed) + tuple(mean)))

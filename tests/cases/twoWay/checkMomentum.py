@@ -21,9 +21,10 @@ import subprocess
 import sys
 
 sys.path.insert(0, os.path.join(os.path.dirname(__file__), '..', 'fluidCommon'))
-sys.path.insert(0, os.path.join(os.path.dirname(__file__), '..', 'coupling'))
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)),
+                                '..', '..', '..', 'src', 'python'))  # particleCloud
 import foamFields  # noqa: E402
-import particleVTK  # noqa: E402
+import particleCloud  # noqa: E402
 
 
 def number(text, key):
@@ -53,13 +54,13 @@ def main():
                     '-time', '0'], check=True, stdout=subprocess.DEVNULL)
     vol = foamFields.read_internal_field(os.path.join(case, '0', 'V'))
 
-    files = [f for f in particleVTK.all_files(case)
-             if particleVTK.read(f)['radius']]
-    times = [particleVTK.time(f) for f in files]
+    files = [f for f in particleCloud.write_times(case)
+             if particleCloud.read(f)['radius']]
+    times = [particleCloud.time(f) for f in files]
     momentum = []
     weight = None
     for f, t in zip(files, times):
-        parts = particleVTK.read(f)
+        parts = particleCloud.read(f)
         masses = [rho_p*4/3*math.pi*r**3 for r in parts['radius']]
         buoy = [rho_f*4/3*math.pi*r**3 for r in parts['radius']]
         pp = [math.fsum(m*v[k] for m, v in zip(masses, parts['velocity']))

@@ -13,8 +13,9 @@ import os
 import re
 import sys
 
-sys.path.insert(0, os.path.join(os.path.dirname(__file__), '..', 'coupling'))
-import particleVTK  # noqa: E402
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)),
+                                '..', '..', '..', 'src', 'python'))  # particleCloud
+import particleCloud  # noqa: E402
 
 
 def number(text, key):
@@ -32,15 +33,15 @@ def main():
                         open(os.path.join(case, 'constant', 'g')).read()).group(1))
     v_s = (rho_p - rho_f)*g*d*d/(18*mu)
 
-    files = particleVTK.all_files(case)
-    vy = [particleVTK.read(f)['velocity'][0][1] for f in files[-2:]]
+    files = particleCloud.write_times(case)
+    vy = [particleCloud.read(f)['velocity'][0][1] for f in files[-2:]]
     err = vy[-1]/v_s - 1
     drift = abs(vy[-1]/vy[-2] - 1)
     print('terminal velocity %.6g m/s, Stokes %.6g m/s: %+.2f %% (tolerance'
           ' %.1f %%); last change %.2e' % (vy[-1], v_s, 100*err, 100*tol, drift))
     ok = abs(err) <= tol and drift <= 0.1*tol
     if len(sys.argv) > 3:
-        ref = particleVTK.read(particleVTK.latest(sys.argv[3]))['velocity'][0][1]
+        ref = particleCloud.read(particleCloud.latest(sys.argv[3]))['velocity'][0][1]
         print('against %s: %.6g m/s (%+.2e relative)'
               % (sys.argv[3], ref, vy[-1]/ref - 1))
         ok &= abs(vy[-1]/ref - 1) <= 1e-3

@@ -8,12 +8,13 @@ usage: checkSuspension.py caseDir [referenceCaseDir]
 import os
 import sys
 
-sys.path.insert(0, os.path.join(os.path.dirname(__file__), '..', 'coupling'))
-import particleVTK  # noqa: E402
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)),
+                                '..', '..', '..', 'src', 'python'))  # particleCloud
+import particleCloud  # noqa: E402
 
 
 def mean_velocity(case):
-    data = particleVTK.read(particleVTK.latest(case))
+    data = particleCloud.read(particleCloud.latest(case))
     vy = [v[1] for x, v in zip(data['position'], data['velocity'])
           if 1.5e-3 < x[1] < 4.5e-3]
     return sum(vy)/len(vy), len(data['position'])

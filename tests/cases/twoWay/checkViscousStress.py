@@ -11,8 +11,9 @@ import os
 import re
 import sys
 
-sys.path.insert(0, os.path.join(os.path.dirname(__file__), '..', 'coupling'))
-import particleVTK  # noqa: E402
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)),
+                                '..', '..', '..', 'src', 'python'))  # particleCloud
+import particleCloud  # noqa: E402
 
 TOL = 0.002
 
@@ -21,7 +22,7 @@ def main():
     case, H, Umax = sys.argv[1], float(sys.argv[2]), float(sys.argv[3])
     props = open(os.path.join(case, 'constant', 'couplingProperties')).read()
     d = float(re.search(r'diameter\s+([^;\s]+)\s*;', props).group(1))
-    data = particleVTK.read(particleVTK.latest(case))
+    data = particleCloud.read(particleCloud.latest(case))
     y = data['position'][0][1]
     v = data['velocity'][0]
     Ux = 4*Umax*y*(H - y)/H**2

@@ -19,8 +19,9 @@ matplotlib.use('Agg')
 import matplotlib.pyplot as plt  # noqa: E402
 
 HERE = os.path.dirname(os.path.abspath(__file__))
-sys.path.insert(0, os.path.join(HERE, '..', '..', '..', 'tests', 'cases', 'coupling'))
-import particleVTK  # noqa: E402
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)),
+                                '..', '..', '..', 'src', 'python'))  # particleCloud
+import particleCloud  # noqa: E402
 
 Y0, Y1 = 1.5e-3, 4.5e-3          # the middle of the column [m]
 AREA = 2e-3*2e-3                 # cross-section [m^2]
@@ -39,14 +40,14 @@ def main():
     v_s = (rho_p - rho_f)*9.81*d*d/(18*mu)
 
     rows = []
-    for f in particleVTK.all_files(HERE):
-        data = particleVTK.read(f)
+    for f in particleCloud.write_times(HERE):
+        data = particleCloud.read(f)
         vy = [v[1] for x, v in zip(data['position'], data['velocity'])
               if Y0 < x[1] < Y1]
         if not vy:
             continue
         eps = 1 - len(vy)*math.pi/6*d**3/(AREA*(Y1 - Y0))
-        rows.append((particleVTK.time(f), sum(vy)/len(vy), eps))
+        rows.append((particleCloud.time(f), sum(vy)/len(vy), eps))
     rows = [r for r in rows if r[0] > 0]
 
     late = [r for r in rows if r[0] >= 0.25*rows[-1][0]]
