@@ -3,8 +3,8 @@
 # and van der Waals, double layer and lubrication) at test size.
 #
 # slotCoater.serial / .parallel: the run reaches its end time; present =
-#   inserted - removed at every write, each particle file holding the
-#   particles present; the initial fill and the feed hold the numbers of
+#   inserted - removed at every write, each write time's cloud holding the
+#   particles present inside the fluid; the initial fill and the feed hold the numbers of
 #   particles the solids fraction implies; particles were removed
 #   (checkBookkeeping.py).
 # slotCoater.serialVsParallel: from the same initial fill, the two runs

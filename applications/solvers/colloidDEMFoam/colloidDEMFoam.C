@@ -54,6 +54,13 @@ int main(int argc, char *argv[])
 
     coupling.write();
 
+    // Progress: from this start (a resumed run counts from where it
+    // resumed) to the end time
+    const scalar startTime = runTime.value();
+    const scalar endTime = runTime.endTime().value();
+    const scalar startClock = runTime.elapsedClockTime();
+    bool written = true;
+
     Info<< "\nStarting time loop\n" << endl;
 
     while (runTime.loop())
@@ -74,7 +81,8 @@ int main(int argc, char *argv[])
 
         runTime.write();
 
-        if (runTime.writeTime())
+        written = runTime.writeTime();
+        if (written)
         {
             coupling.write();
             if (fluid.valid())
@@ -84,9 +92,25 @@ int main(int argc, char *argv[])
             }
         }
 
-        Info<< "ExecutionTime = " << runTime.elapsedCpuTime() << " s"
+        const scalar done =
+            (runTime.value() - startTime)/max(endTime - startTime, VSMALL);
+        const scalar seconds = runTime.elapsedClockTime() - startClock;
+        Info<< "Progress: " << runTime.timeName() << " of " << endTime
+            << " s (" << label(100*done) << " %), "
+            << coupling.particleSteps()/max(seconds, 1) << " particle-steps/s,"
+            << " ETA " << label(seconds*(1 - done)/max(done, VSMALL)) << " s"
+            << nl
+            << "ExecutionTime = " << runTime.elapsedCpuTime() << " s"
             << "  ClockTime = " << runTime.elapsedClockTime() << " s"
             << nl << endl;
+    }
+
+    // The end time is always written, also when it is not a write time
+    // (e.g. a shortened run), so that the run can be looked at and resumed
+    if (!written)
+    {
+        runTime.writeNow();
+        coupling.write();
     }
 
     Info<< "End\n" << endl;

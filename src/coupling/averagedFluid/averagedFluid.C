@@ -23,7 +23,7 @@ Foam::averagedFluid::averagedFluid
             "phi",
             U.mesh().time().timeName(),
             U.mesh(),
-            IOobject::NO_READ,
+            IOobject::READ_IF_PRESENT,
             IOobject::AUTO_WRITE
         ),
         fvc::flux(coupling.voidfraction()*U)
@@ -46,7 +46,14 @@ Foam::averagedFluid::averagedFluid
     fvOptions_(fv::options::New(mesh)),
     deferred_
     (
-        IOobject("deferredDrag", U.mesh().time().timeName(), U.mesh()),
+        IOobject
+        (
+            "deferredDrag",
+            U.mesh().time().timeName(),
+            U.mesh(),
+            IOobject::READ_IF_PRESENT,
+            IOobject::AUTO_WRITE
+        ),
         U.mesh(),
         dimensionedVector("zero", dimAcceleration, Zero)
     ),

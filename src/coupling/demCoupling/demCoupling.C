@@ -58,18 +58,6 @@ void Foam::demCoupling::checkTimeStep() const
 {
     const Time& runTime = mesh_.time();
 
-    // The DEM state (particles, contact histories) is not saved with the
-    // time folders: a run that starts later would silently start the DEM
-    // afresh
-    if (runTime.startTime().value() != 0)
-    {
-        FatalIOErrorInFunction(runTime.controlDict())
-            << "The run starts at time " << runTime.startTime().value()
-            << " s (keywords 'startFrom'/'startTime' in "
-            << runTime.controlDict().name() << "); colloidDEMFoam cannot"
-            << " restart (the DEM state is not saved with the time"
-            << " folders): start from time 0" << exit(FatalIOError);
-    }
     const scalar deltaT = runTime.deltaTValue();
     const scalar couplingDt = props_.couplingTimeStep();
 
@@ -189,6 +177,9 @@ void Foam::demCoupling::startDEM()
         )
     );
 
+    // Fresh start or resume (colloid_restart, colloid_restart_file)
+    restart_.defineVariables(dem);
+
     Info<< "Reading DEM script " << props_.demScript() << endl;
     dem.file(props_.demScript());
 
@@ -237,8 +228,13 @@ void Foam::demCoupling::startDEM()
         dem.command(os.str());
     }
 
+    restart_.addFixes(dem);
+
     // Full set-up (neighbour lists, initial insertion) without moving
     dem.run(0);
+
+    // Resuming: the script read the state; the last step's force back
+    nInserted_ = restart_.restored(dem, props_.demScript());
 }
 
 
@@ -567,6 +563,7 @@ Foam::demCoupling::demCoupling
     deposit_(U.mesh(), locator_),
     proc_(),
     engine_(),
+    restart_(U.mesh()),
     nInserted_(0),
     demSeconds_(0),
     couplingSeconds_(0),
@@ -896,6 +893,15 @@ void Foam::demCoupling::evolve()
 
 void Foam::demCoupling::write()
 {
+    // The start time of a resumed run keeps the output it was resumed
+    // from; a fresh start has no DEM state worth saving at its start
+    const Time& runTime = mesh_.time();
+    const bool atStart = runTime.timeIndex() == runTime.startTimeIndex();
+    if (atStart && restart_.resume())
+    {
+        return;
+    }
+
     try
     {
         countNewParticles();
@@ -961,6 +967,11 @@ void Foam::demCoupling::write()
                 << " other than through a massflow/mesh outflow"
                 << " (e.g. 'thermo_modify lost ignore' in the DEM script)"
                 << endl;
+        }
+
+        if (!atStart)
+        {
+            restart_.write(dem, nInserted_);
         }
 
         if (demSeconds_ > 0)

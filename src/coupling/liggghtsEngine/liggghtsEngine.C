@@ -174,6 +174,62 @@ void Foam::liggghtsEngine::file(const std::string& fileName)
 }
 
 
+void Foam::liggghtsEngine::writeRestart(const std::string& pattern)
+{
+    const std::string::size_type percent = pattern.find('%');
+    if (percent == std::string::npos)
+    {
+        throw std::runtime_error
+        (
+            "restart file pattern '" + pattern + "' has no '%'"
+        );
+    }
+    command("write_restart " + pattern);
+
+    auto named = [&](const std::string& part)
+    {
+        std::string name(pattern);
+        return name.replace(percent, 1, part);
+    };
+
+    // This rank's atoms: an int n, then n doubles (write_restart.cpp)
+    const std::string own = named(std::to_string(worldRank));
+    std::ifstream is(own, std::ios::binary | std::ios::ate);
+    const long long size = is ? static_cast<long long>(is.tellg()) : -1;
+    int n = -1;
+    if (size >= static_cast<long long>(sizeof(int)))
+    {
+        is.seekg(0);
+        is.read(reinterpret_cast<char*>(&n), sizeof(int));
+    }
+    const long long expected =
+        static_cast<long long>(sizeof(int))
+      + static_cast<long long>(sizeof(double))*n;
+    if (n < 0 || size != expected)
+    {
+        throw std::runtime_error
+        (
+            "the DEM restart file " + own + " is incomplete ("
+          + std::to_string(size) + " bytes of "
+          + std::to_string(n < 0 ? 0 : expected)
+          + "): is the disk full?"
+        );
+    }
+    if (worldRank == 0)
+    {
+        std::ifstream base(named("base"), std::ios::binary | std::ios::ate);
+        if (!base || base.tellg() <= 0)
+        {
+            throw std::runtime_error
+            (
+                "the DEM restart file " + named("base") + " is empty or"
+                " missing: is the disk full?"
+            );
+        }
+    }
+}
+
+
 void Foam::liggghtsEngine::run(long nSteps)
 {
     std::string line = "run " + std::to_string(nSteps);
@@ -191,6 +247,12 @@ std::string Foam::liggghtsEngine::unitStyle() const
 {
     const char* u = engine(lmp_)->update->unit_style;
     return u ? std::string(u) : std::string();
+}
+
+
+bool Foam::liggghtsEngine::hasFix(const std::string& fixId) const
+{
+    return engine(lmp_)->modify->find_fix(fixId.c_str()) >= 0;
 }
 
 
@@ -251,6 +313,18 @@ void Foam::liggghtsEngine::box
 }
 
 
+long Foam::liggghtsEngine::timeStep() const
+{
+    return static_cast<long>(engine(lmp_)->update->ntimestep);
+}
+
+
+double Foam::liggghtsEngine::timeStepSize() const
+{
+    return engine(lmp_)->update->dt;
+}
+
+
 int Foam::liggghtsEngine::nLocal() const
 {
     return engine(lmp_)->atom->nlocal;
@@ -278,6 +352,18 @@ double** Foam::liggghtsEngine::x() const
 double** Foam::liggghtsEngine::v() const
 {
     return engine(lmp_)->atom->v;
+}
+
+
+double** Foam::liggghtsEngine::f() const
+{
+    return engine(lmp_)->atom->f;
+}
+
+
+double** Foam::liggghtsEngine::torque() const
+{
+    return engine(lmp_)->atom->torque;
 }
 
 

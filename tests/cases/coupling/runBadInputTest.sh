@@ -5,7 +5,7 @@
 # usage: runBadInputTest.sh variant workDir
 #   variants: missingKeyword negativeDiameter negativeDensity
 #             unknownDragModel inconsistentDeltaT demStepTooLong
-#             gravityInScript demScriptError restart
+#             gravityInScript demScriptError resumeIncomplete
 set -e
 export PYTHONDONTWRITEBYTECODE=1   # no __pycache__ in the source tree
 variant=$1
@@ -53,11 +53,12 @@ case $variant in
         # LIGGGHTS exits by itself; its error must reach the solver's output
         echo "fix oops all noSuchFixStyle" >> constant/DEM/in.liggghts
         expect="ERROR: Invalid fix style: \"noSuchFixStyle\"" ;;
-    restart)
-        # a later time folder and startFrom latestTime: no restart support
+    resumeIncomplete)
+        # a later time folder without the DEM state (as one killed while
+        # it was written) and startFrom latestTime: not resumed from
         cp -r 0 1e-07
         foamDictionary system/controlDict -entry startFrom -set latestTime > /dev/null
-        expect="The run starts at time 1e-07 s .*cannot restart" ;;
+        expect="The start time 1e-07 has no DEM state .*its write did not complete" ;;
     *)  echo "unknown variant $variant"; exit 2 ;;
 esac
 

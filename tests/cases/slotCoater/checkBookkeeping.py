@@ -2,11 +2,12 @@
 """Particle bookkeeping of a slot-coater run (tutorials/slotCoater) against
 the numbers its settings imply.
 
-1. The run reached END_TIME and wrote a particle file at every write.
+1. The run reached END_TIME and wrote the particles at every write.
 2. At every write of log.colloidDEMFoam: present (LIGGGHTS' atom count) =
    inserted (counted by the coupling as particles first appear) - removed
-   (counted by the DEM's outflow fix), and the particle file holds the
-   particles present.
+   (counted by the DEM's outflow fix), and the write time's cloud
+   (lagrangian/particles) holds the particles the log says it wrote: those
+   present inside the fluid (the feed zone above the inlet is outside).
 3. The initial fill (DEM/fill.data) holds, per region (gap and slot),
    solidsFraction x region volume / V_p particles (LIGGGHTS rounds: +-1).
 4. inserted = fill + the feed: the feed zone (two diameters above the
@@ -57,7 +58,8 @@ def main():
           "%d writes, %d particle files" % (len(counts), len(files)))
     for (present, inserted, removed, written), path in zip(counts, files):
         nFile = len(particleCloud.read(path)["position"])
-        check(present == inserted - removed and nFile == written == present,
+        # written: those inside the fluid (not the feed zone above the inlet)
+        check(present == inserted - removed and nFile == written <= present,
               "%-20s present %d = inserted %d - removed %d; written %d, read %d"
               % (os.path.basename(path), present, inserted, removed, written, nFile))
     present, inserted, removed, written = counts[-1]

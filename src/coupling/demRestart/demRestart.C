@@ -1,0 +1,330 @@
+#include "demRestart.H"
+#include "IOdictionary.H"
+#include "OSspecific.H"
+#include "Time.H"
+#include "demUnits.H"
+
+namespace
+{
+
+const char* const markerName = "colloidCoupling";
+
+// The per-atom properties of the last step's force and torque
+const char* const forceFix = "colloidForce";
+const char* const torqueFix = "colloidTorque";
+
+// LIGGGHTS' insert/stream: per atom, column 4 of its release data is the
+// step at which a particle inserted in the feed zone is released; a copy
+// of it (see the class description)
+const char* const releaseFix = "release_fix_insert_stream";
+const int releaseStepColumn = 4;
+const char* const releaseCopyFix = "colloidReleaseStep";
+
+// to[i] = from[i] for n per-atom 3-vectors
+void copyVectors(double** from, double** to, const int n)
+{
+    for (int i = 0; i < n; ++i)
+    {
+        for (int k = 0; k < 3; ++k)
+        {
+            to[i][k] = from[i][k];
+        }
+    }
+}
+
+} // End anonymous namespace
+
+
+// * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * //
+
+Foam::fileName Foam::demRestart::pattern(const fileName& dir)
+{
+    return dir/"restart.%";
+}
+
+
+// * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * //
+
+Foam::demRestart::demRestart(const fvMesh& mesh)
+:
+    mesh_(mesh),
+    resume_(false),
+    demStep_(0),
+    nInserted_(0),
+    demTimeStepSize_(0)
+{
+    const Time& runTime = mesh.time();
+
+    IOobject markerIO
+    (
+        markerName,
+        runTime.timeName(),
+        "uniform",
+        mesh,
+        IOobject::MUST_READ,
+        IOobject::NO_WRITE,
+        false
+    );
+    resume_ = returnReduce
+    (
+        markerIO.typeHeaderOk<IOdictionary>(false),
+        andOp<bool>()
+    );
+
+    if (resume_)
+    {
+        IOdictionary marker(markerIO);
+        demStep_ = marker.get<label>("demStep");
+        nInserted_ = marker.get<label>("nInserted");
+        const label nProcs = marker.get<label>("nProcs");
+        demTimeStepSize_ = marker.get<scalar>("demTimeStep");
+        if (nProcs != Pstream::nProcs())
+        {
+            FatalIOErrorInFunction(marker)
+                << "The DEM state of time " << runTime.timeName()
+                << " was written by " << nProcs << " ranks (keyword"
+                << " 'nProcs' in " << marker.name() << "); this run has "
+                << Pstream::nProcs() << ".  Resume it with " << nProcs
+                << " ranks" << exit(FatalIOError);
+        }
+
+        const fileName files(pattern(runTime.timePath()/"DEM"));
+        fileName missing;
+        if (Pstream::master() && !isFile(files.path()/"restart.base"))
+        {
+            missing = files.path()/"restart.base";
+        }
+        const fileName own
+        (
+            files.path()/("restart." + Foam::name(Pstream::myProcNo()))
+        );
+        if (!isFile(own))
+        {
+            missing = own;
+        }
+        if (returnReduce(!missing.empty(), orOp<bool>()))
+        {
+            FatalErrorInFunction
+                << "Cannot resume from time " << runTime.timeName()
+                << ": its DEM state is incomplete"
+                << (missing.empty() ? word() : word(" (no " + missing + ")"))
+                << " although " << marker.objectPath() << " says it was"
+                << " written" << exit(FatalError);
+        }
+
+        Info<< "Resuming from time " << runTime.timeName() << ": DEM step "
+            << demStep_ << ", " << nInserted_ << " particles inserted so far"
+            << " (" << files << ")" << nl << endl;
+        return;
+    }
+
+    // No resumable state: a fresh start, unless earlier times exist (the
+    // start time was not written completely, or not by this solver)
+    const scalar start = runTime.value();
+    const scalar tol = 1e-6*runTime.deltaTValue();
+    word latestComplete;
+    bool earlier = false;
+    for (const instant& t : runTime.times())
+    {
+        if (t.name() == "constant" || t.value() >= start - tol)
+        {
+            continue;
+        }
+        earlier = true;
+        if (isFile(runTime.path()/t.name()/"uniform"/markerName))
+        {
+            latestComplete = t.name();
+        }
+    }
+    if (returnReduce(earlier, orOp<bool>()))
+    {
+        FatalErrorInFunction
+            << "The start time " << runTime.timeName() << " has no DEM"
+            << " state (" << runTime.timePath()/"uniform"/markerName
+            << "): its write did not complete (the run was stopped while"
+            << " writing) or it was not written by colloidDEMFoam. "
+            << (
+                   latestComplete.empty()
+                 ? word("No earlier time can be resumed from either.")
+                 : word
+                   (
+                       "The latest time that can be resumed from is "
+                     + latestComplete + ": set startFrom startTime;"
+                       " startTime " + latestComplete + "; in"
+                       " system/controlDict, or delete the later time"
+                       " folders."
+                   )
+               )
+            << exit(FatalError);
+    }
+}
+
+
+// * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * //
+
+void Foam::demRestart::defineVariables(liggghtsEngine& dem) const
+{
+    dem.command
+    (
+        std::string("variable colloid_restart equal ") + (resume_ ? "1" : "0")
+    );
+    dem.command
+    (
+        "variable colloid_restart_file string "
+      + pattern(mesh_.time().timePath()/"DEM")
+    );
+}
+
+
+void Foam::demRestart::addFixes(liggghtsEngine& dem) const
+{
+    for (const char* id : {forceFix, torqueFix})
+    {
+        dem.command
+        (
+            std::string("fix ") + id + " all property/atom " + id
+          + " vector yes no no 0 0 0"
+        );
+    }
+    dem.command
+    (
+        std::string("fix ") + releaseCopyFix + " all property/atom "
+      + releaseCopyFix + " scalar yes no no -1"
+    );
+}
+
+
+Foam::label Foam::demRestart::restored
+(
+    liggghtsEngine& dem,
+    const fileName& script
+) const
+{
+    if (!resume_)
+    {
+        return 0;
+    }
+
+    if (dem.timeStep() != demStep_)
+    {
+        FatalErrorInFunction
+            << "Resuming from time " << mesh_.time().timeName()
+            << " (DEM step " << demStep_ << "), the DEM script " << script
+            << " did not read the DEM state (the DEM is at step "
+            << dem.timeStep() << ").  The script must read it instead of"
+            << " creating the box and particles when colloid_restart is 1:"
+            << nl << nl
+            << "    if \"${colloid_restart} == 0\" then &" << nl
+            << "        \"atom_style sphere\" ... \"read_data ...\" &" << nl
+            << "    else &" << nl
+            << "        \"read_restart ${colloid_restart_file}\"" << nl
+            << exit(FatalError);
+    }
+
+    // The force and torque of the last step's end, for the first
+    // half-step (see the class description)
+    const int n = dem.nLocal();
+    copyVectors(dem.vectorProperty(forceFix), dem.f(), n);
+    copyVectors(dem.vectorProperty(torqueFix), dem.torque(), n);
+
+    // The feed's release steps as they were, unless the step changed
+    // (then LIGGGHTS' rescaled ones stand)
+    const scalar dt = dem.timeStepSize()*demUnits::time;
+    if
+    (
+        dem.hasFix(releaseFix)
+     && mag(dt - demTimeStepSize_) <= 1e-6*demTimeStepSize_
+    )
+    {
+        double** release = dem.vectorProperty(releaseFix);
+        double* saved = dem.scalarProperty(releaseCopyFix);
+        for (int i = 0; i < n; ++i)
+        {
+            if (saved[i] >= 0)
+            {
+                release[i][releaseStepColumn] = saved[i];
+            }
+        }
+    }
+    return nInserted_;
+}
+
+
+void Foam::demRestart::write(liggghtsEngine& dem, const label nInserted) const
+{
+    const Time& runTime = mesh_.time();
+    const fileName dir(runTime.timePath()/"DEM");
+    const fileName tmp(runTime.timePath()/"DEM.tmp");
+
+    const long step = dem.timeStep();
+    if (step > labelMax)
+    {
+        FatalErrorInFunction
+            << "DEM step " << step << " exceeds the largest label "
+            << labelMax << ": the restart counters cannot hold it"
+            << exit(FatalError);
+    }
+
+    const int n = dem.nLocal();
+    copyVectors(dem.f(), dem.vectorProperty(forceFix), n);
+    copyVectors(dem.torque(), dem.vectorProperty(torqueFix), n);
+    if (dem.hasFix(releaseFix))
+    {
+        double** release = dem.vectorProperty(releaseFix);
+        double* copy = dem.scalarProperty(releaseCopyFix);
+        for (int i = 0; i < n; ++i)
+        {
+            copy[i] = release[i][releaseStepColumn];
+        }
+    }
+
+    rmDir(tmp);
+    if (!mkDir(tmp))
+    {
+        FatalErrorInFunction
+            << "Cannot create " << tmp << " for the DEM state"
+            << exit(FatalError);
+    }
+    dem.writeRestart(pattern(tmp));
+
+    // Every rank's files are complete: replace the time's DEM state
+    label barrier = 0;
+    reduce(barrier, sumOp<label>());
+    rmDir(dir);
+    if (!mv(tmp, dir))
+    {
+        FatalErrorInFunction
+            << "Cannot rename " << tmp << " to " << dir
+            << exit(FatalError);
+    }
+
+    // The counters, last, also written under a temporary name
+    reduce(barrier, sumOp<label>());
+    IOdictionary marker
+    (
+        IOobject
+        (
+            word(markerName) + ".tmp",
+            runTime.timeName(),
+            "uniform",
+            mesh_,
+            IOobject::NO_READ,
+            IOobject::NO_WRITE,
+            false
+        )
+    );
+    marker.add("demStep", label(step));
+    marker.add("nInserted", nInserted);
+    marker.add("nProcs", Pstream::nProcs());
+    marker.add("demTimeStep", dem.timeStepSize()*demUnits::time);
+    if (!marker.regIOobject::write())
+    {
+        FatalErrorInFunction
+            << "Cannot write " << marker.objectPath() << exit(FatalError);
+    }
+    if (!mv(marker.objectPath(), marker.objectPath().path()/markerName))
+    {
+        FatalErrorInFunction
+            << "Cannot rename " << marker.objectPath() << exit(FatalError);
+    }
+}
