@@ -20,8 +20,10 @@
 #include "atom.h"
 #include "comm.h"
 #include "error.h"
+#include "input.h"
 #include "lammps.h"
 #include "update.h"
+#include "variable.h"
 #include "colloid_units.h"
 
 namespace LIGGGHTS {
@@ -64,11 +66,22 @@ public:
             fraction > 0.0 ? "" : " (integrated implicitly, not enforced)");
         print(msg);
         if (!(fraction > 0.0) || dt <= fraction*seconds) return;
-        std::snprintf(msg, sizeof(msg),
-            "%s: the time step %g s exceeds %g x the %s (%g s); use 'timestep %g' "
-            "or less (run units us), or, at your own risk, 'timeStepCheck off' on "
-            "the pair_style (or fix wall/gran) line",
-            model_, dt, fraction, what, seconds, fraction*seconds/MicroUnits::time);
+        // Inside colloidDEMFoam (which defines colloid_timestep) the step
+        // is the coupling's setting, in seconds; alone, LIGGGHTS' own
+        char coupled[] = "colloid_timestep";
+        if (lmp_->input->variable->find(coupled) >= 0)
+            std::snprintf(msg, sizeof(msg),
+                "%s: the time step %g s exceeds %g x the %s (%g s); set DEM { "
+                "timeStep %g; } (seconds) or less in constant/couplingProperties, "
+                "or, at your own risk, 'timeStepCheck off' on the pair_style (or "
+                "fix wall/gran) line of the DEM script",
+                model_, dt, fraction, what, seconds, fraction*seconds);
+        else
+            std::snprintf(msg, sizeof(msg),
+                "%s: the time step %g s exceeds %g x the %s (%g s); use 'timestep %g' "
+                "or less (run units us), or, at your own risk, 'timeStepCheck off' on "
+                "the pair_style (or fix wall/gran) line",
+                model_, dt, fraction, what, seconds, fraction*seconds/MicroUnits::time);
         if (enforce_)
             lmp_->error->all(FLERR, msg);
         else

@@ -32,14 +32,18 @@ set_tests_properties(case.coupling.settling.meshesAgree PROPERTIES
 
 foreach(variant missingKeyword negativeDiameter negativeDensity unknownDragModel
                 inconsistentDeltaT demStepTooLong gravityInScript demScriptError
-                resumeIncomplete)
+                resumeIncomplete misspeltKeyword misspeltTopKeyword
+                diameterMismatch lostParticle)
     add_test(NAME case.coupling.badInput.${variant}
         COMMAND ${couplingDir}/runBadInputTest.sh ${variant} ${couplingWork}/badInput_${variant})
     set_tests_properties(case.coupling.badInput.${variant} PROPERTIES
         TIMEOUT 60 LABELS "case;coupling")
 endforeach()
-set_tests_properties(case.coupling.badInput.resumeIncomplete PROPERTIES
-    LABELS "case;coupling;reliability")
+foreach(variant resumeIncomplete misspeltKeyword misspeltTopKeyword
+                diameterMismatch lostParticle)
+    set_tests_properties(case.coupling.badInput.${variant} PROPERTIES
+        LABELS "case;coupling;reliability")
+endforeach()
 
 # parallel: 2 ranks, fluid split in x (simple), LIGGGHTS split in y: the
 #   particle crosses the fluid's processor boundary, stays located (at most

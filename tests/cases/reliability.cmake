@@ -13,6 +13,16 @@
 #   (reconstructed, and decomposed for the parallel run), by foamToVTK and
 #   by particleCloud.py: the count of the solver's log, the same ids and
 #   positions, every field present.
+# reliability.diskFull: the serial fixture run again in a 7 MB tmpfs that
+#   fills at the third write: a clear stop with the file system's reason,
+#   no incomplete time folder, and once the tmpfs is grown, a resume from
+#   the last complete write to the end (skipped, exit 77, without root).
+# reliability.allrun.<probe>: the slot-coater Allrun at test size with a
+#   user's faults and mistakes (runAllrunProbeTest.sh): nu 0, a steady
+#   flow that does not converge, a fill that cannot reach its solids
+#   fraction, a re-run after a failed run, -parallel with an end time that
+#   is no write time, a killed run resumed with ./Allrun -resume.  Each
+#   must give its exit status, message and files.
 # coupling.badInput.resumeIncomplete (coupling.cmake, also labelled here):
 #   a later time folder without the DEM state stops the run, naming it.
 
@@ -36,3 +46,21 @@ foreach(mode serial parallel)
         FIXTURES_REQUIRED slotCoater_${mode})
 endforeach()
 set_tests_properties(case.reliability.resume.parallel PROPERTIES PROCESSORS 2)
+
+add_test(NAME case.reliability.diskFull
+    COMMAND ${reliabilityDir}/runDiskFullTest.sh
+            ${reliabilityFixtures}/serial ${reliabilityWork}/diskFull)
+set_tests_properties(case.reliability.diskFull PROPERTIES
+    TIMEOUT 180 LABELS "case;reliability" SKIP_RETURN_CODE 77
+    FIXTURES_REQUIRED slotCoater_serial)
+
+foreach(probe nuZero notConverged fillTooDense rerunAfterFailure
+              shortEndTimeParallel resumeAfterKill)
+    add_test(NAME case.reliability.allrun.${probe}
+        COMMAND ${reliabilityDir}/runAllrunProbeTest.sh ${probe}
+                ${reliabilityWork}/allrun_${probe})
+    set_tests_properties(case.reliability.allrun.${probe} PROPERTIES
+        TIMEOUT 180 LABELS "case;reliability")
+endforeach()
+set_tests_properties(case.reliability.allrun.shortEndTimeParallel PROPERTIES
+    PROCESSORS 2)

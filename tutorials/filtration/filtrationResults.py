@@ -75,6 +75,22 @@ def read_results(run):
     return out
 
 
+def read_series(run, function, file):
+    """Rows of a function object's file over the whole run: a resumed run
+    writes its rows under postProcessing/<function>/<start time>/; the
+    folders are joined in time order, each row after the last time kept."""
+    folders = glob.glob(os.path.join(run, 'postProcessing', function, '*'))
+    rows = []
+    for folder in sorted(folders, key=lambda f: float(os.path.basename(f))):
+        for row in read_columns(os.path.join(folder, file)):
+            if not rows or row[0] > rows[-1][0]:
+                rows.append(row)
+    if not rows:
+        raise SystemExit('no %s/*/%s in %s/postProcessing'
+                         % (function, file, run))
+    return rows
+
+
 def read_columns(path):
     rows = []
     for line in open(path):
@@ -114,8 +130,7 @@ def main():
     dt_dem = float(re.search(r'timeStep\s+([^;]+);', text).group(1))
 
     # Filtrate flow rate Q(t) [m^3/s] and volume V(t) (trapezoidal)
-    flux = read_columns(glob.glob(os.path.join(
-        run, 'postProcessing', 'filtrate', '*', 'surfaceFieldValue.dat'))[0])
+    flux = read_series(run, 'filtrate', 'surfaceFieldValue.dat')
     t_q = [0.0] + [r[0] for r in flux]
     q = [flux[0][1]] + [r[1] for r in flux]
     vol = [0.0]
@@ -130,8 +145,7 @@ def main():
                 return ys[k - 1] + w*(ys[k] - ys[k - 1])
         return ys[-1]
 
-    lowest = read_columns(glob.glob(os.path.join(
-        run, 'postProcessing', 'lowestLayer', '*', 'volFieldValue.dat'))[0])
+    lowest = read_series(run, 'lowestLayer', 'volFieldValue.dat')
 
     # Particles at each write: the solids fraction in slabs of one
     # diameter (spheres cut exactly); the cake is the dense layer on the

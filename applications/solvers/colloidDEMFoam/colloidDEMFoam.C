@@ -79,12 +79,12 @@ int main(int argc, char *argv[])
         // Forces of the next interval from the (new) fluid
         coupling.updateForces();
 
-        runTime.write();
+        const bool fieldsWritten = runTime.write();
 
         written = runTime.writeTime();
         if (written)
         {
-            coupling.write();
+            coupling.write(fieldsWritten);
             if (fluid.valid())
             {
                 Info<< "Timing (master, wall clock): fluid solve "
@@ -109,8 +109,7 @@ int main(int argc, char *argv[])
     // (e.g. a shortened run), so that the run can be looked at and resumed
     if (!written)
     {
-        runTime.writeNow();
-        coupling.write();
+        coupling.write(runTime.writeNow());
     }
 
     Info<< "End\n" << endl;

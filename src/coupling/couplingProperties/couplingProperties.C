@@ -1,6 +1,7 @@
 #include "couplingProperties.H"
 #include "Time.H"
 #include "OSspecific.H"
+#include "keywordCheck.H"
 
 const Foam::dictionary& Foam::couplingProperties::requiredSubDict
 (
@@ -65,6 +66,7 @@ Foam::couplingProperties::couplingProperties(const objectRegistry& obr)
     demTimeStep_(0),
     couplingInterval_(0),
     demScreen_(false),
+    allowLostParticles_(false),
     twoWay_(false),
     modelB_(false),
     epsilonMin_(1),
@@ -208,4 +210,34 @@ Foam::couplingProperties::couplingProperties(const objectRegistry& obr)
     }
 
     demScreen_ = dem.getOrDefault<bool>("screen", false);
+    allowLostParticles_ = dem.getOrDefault<bool>("allowLostParticles", false);
+
+    // Misspelt keywords: the sub-dictionaries hold only these settings;
+    // the top level may also hold a case's #included parameters
+    keywordCheck
+    (
+        dict,
+        {"couplingMode", "dragModel", "forceModels", "twoWay", "fluid",
+         "particles", "DEM"},
+        false
+    );
+    if (twoWay_)
+    {
+        keywordCheck
+        (
+            dict.subDict("twoWay"),
+            {"modelType", "epsilonMin", "kernelRadius",
+             "selfInducedVelocity", "clipFluidFraction"},
+            true
+        );
+    }
+    keywordCheck(fluid, {"rho", "mu", "nu"}, true);
+    keywordCheck(particles, {"diameter", "density"}, true);
+    keywordCheck
+    (
+        dem,
+        {"script", "timeStep", "couplingInterval", "screen",
+         "allowLostParticles"},
+        true
+    );
 }

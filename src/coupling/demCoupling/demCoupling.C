@@ -244,16 +244,53 @@ void Foam::demCoupling::countNewParticles()
     const int n = dem.nLocal();
     double* seen = dem.scalarProperty("colloidSeen");
 
+    // The particles of the settings: the start-up checks (time-step
+    // limits, the DEM's colloid_diameter) are made for them
+    const double* r = dem.radius();
+    const double* m = dem.rmass();
+    const scalar d = props_.particleDiameter();
+    const scalar rho = props_.particleDensity();
     label nNew = 0;
+    label nOther = 0;
+    scalar otherD = 0, otherRho = 0;
     for (int i = 0; i < n; ++i)
     {
         if (seen[i] == 0)
         {
             seen[i] = 1;
             ++nNew;
+            const scalar di = 2*demUnits::length*r[i];
+            const scalar rhoi =
+                demUnits::mass*m[i]
+               /(constant::mathematical::pi/6*pow3(di));
+            if
+            (
+                mag(di - d) > 1e-6*d
+             || mag(rhoi - rho) > 1e-6*rho
+            )
+            {
+                ++nOther;
+                otherD = di;
+                otherRho = rhoi;
+            }
         }
     }
     nInserted_ += returnReduce(nNew, sumOp<label>());
+
+    if (returnReduce(nOther, sumOp<label>()))
+    {
+        const dictionary& particles = props_.subDict("particles");
+        FatalIOErrorInFunction(particles)
+            << returnReduce(nOther, sumOp<label>()) << " particles of the"
+            << " DEM (e.g. diameter " << returnReduce(otherD, maxOp<scalar>())
+            << " m, density " << returnReduce(otherRho, maxOp<scalar>())
+            << " kg/m^3) are not those of " << particles.name()
+            << " (diameter " << d << " m, density " << rho << " kg/m^3),"
+            << " for which the start-up checks were made: set the DEM's"
+            << " particles from colloid_diameter and colloid_density, or"
+            << " change 'diameter' and 'density' there"
+            << exit(FatalIOError);
+    }
 }
 
 
@@ -891,7 +928,7 @@ void Foam::demCoupling::evolve()
 }
 
 
-void Foam::demCoupling::write()
+void Foam::demCoupling::write(const bool fieldsWritten)
 {
     // The start time of a resumed run keeps the output it was resumed
     // from; a fresh start has no DEM state worth saving at its start
@@ -900,6 +937,10 @@ void Foam::demCoupling::write()
     if (atStart && restart_.resume())
     {
         return;
+    }
+    if (!returnReduce(fieldsWritten, andOp<bool>()))
+    {
+        restart_.abandonWrite("the fluid fields could not be written");
     }
 
     try
@@ -942,8 +983,17 @@ void Foam::demCoupling::write()
         }
 
         const label nPresent = returnReduce(label(n), sumOp<label>());
+        bool cloudWritten = true;
         const label nWritten =
-            particleCloudWriter::write(mesh_, cloudName_, out);
+            particleCloudWriter::write(mesh_, cloudName_, out, cloudWritten);
+        if (!returnReduce(cloudWritten, andOp<bool>()))
+        {
+            restart_.abandonWrite
+            (
+                "the particles (lagrangian/" + word(cloudName_)
+              + ") could not be written"
+            );
+        }
 
         // The searches of this output are not those of a coupling step
         locator_.nGlobalSearches();
@@ -961,17 +1011,35 @@ void Foam::demCoupling::write()
 
         if (nPresent != nInserted_ - nRemoved)
         {
+            const dictionary& demDict = props_.subDict("DEM");
+            if (!props_.allowLostParticles())
+            {
+                FatalIOErrorInFunction(demDict)
+                    << "At time " << runTime.timeName() << " s, "
+                    << nInserted_ - nRemoved - nPresent << " particles were"
+                    << " lost by the DEM (present " << nPresent
+                    << " != inserted " << nInserted_ << " - removed "
+                    << nRemoved << "), not through a massflow/mesh outflow:"
+                    << " they left the DEM box or were deleted (e.g."
+                    << " 'thermo_modify lost ignore' in the DEM script).  Set"
+                    << " allowLostParticles yes in " << demDict.name()
+                    << " to go on without them" << exit(FatalIOError);
+            }
             WarningInFunction
                 << "present " << nPresent << " != inserted " << nInserted_
                 << " - removed " << nRemoved << ": particles were lost"
                 << " other than through a massflow/mesh outflow"
-                << " (e.g. 'thermo_modify lost ignore' in the DEM script)"
+                << " (allowLostParticles yes in " << demDict.name() << ")"
                 << endl;
         }
 
         if (!atStart)
         {
-            restart_.write(dem, nInserted_);
+            const string problem = restart_.write(dem, nInserted_);
+            if (!problem.empty())
+            {
+                restart_.abandonWrite(problem);
+            }
         }
 
         if (demSeconds_ > 0)

@@ -4,6 +4,12 @@
 #include "Time.H"
 #include "demUnits.H"
 
+#include <cerrno>
+#include <cstdio>
+#include <cstring>
+#include <vector>
+#include <sys/statvfs.h>
+
 namespace
 {
 
@@ -250,11 +256,30 @@ Foam::label Foam::demRestart::restored
 }
 
 
-void Foam::demRestart::write(liggghtsEngine& dem, const label nInserted) const
+Foam::string Foam::demRestart::write
+(
+    liggghtsEngine& dem,
+    const label nInserted
+) const
 {
     const Time& runTime = mesh_.time();
     const fileName dir(runTime.timePath()/"DEM");
     const fileName tmp(runTime.timePath()/"DEM.tmp");
+
+    // A problem on any rank is a problem of all (collective)
+    string problem;
+    auto failed = [&problem]()
+    {
+        if (returnReduce(problem.empty(), andOp<bool>()))
+        {
+            return false;
+        }
+        if (problem.empty())
+        {
+            problem = "the DEM state could not be written on another rank";
+        }
+        return true;
+    };
 
     const long step = dem.timeStep();
     if (step > labelMax)
@@ -281,25 +306,30 @@ void Foam::demRestart::write(liggghtsEngine& dem, const label nInserted) const
     rmDir(tmp);
     if (!mkDir(tmp))
     {
-        FatalErrorInFunction
-            << "Cannot create " << tmp << " for the DEM state"
-            << exit(FatalError);
+        problem = "cannot create " + tmp;
     }
-    dem.writeRestart(pattern(tmp));
+    if (failed())
+    {
+        return problem;
+    }
+    problem = dem.writeRestart(pattern(tmp));
+    if (failed())
+    {
+        return problem;
+    }
 
     // Every rank's files are complete: replace the time's DEM state
-    label barrier = 0;
-    reduce(barrier, sumOp<label>());
     rmDir(dir);
     if (!mv(tmp, dir))
     {
-        FatalErrorInFunction
-            << "Cannot rename " << tmp << " to " << dir
-            << exit(FatalError);
+        problem = "cannot rename " + tmp + " to " + dir;
+    }
+    if (failed())
+    {
+        return problem;
     }
 
     // The counters, last, also written under a temporary name
-    reduce(barrier, sumOp<label>());
     IOdictionary marker
     (
         IOobject
@@ -317,14 +347,60 @@ void Foam::demRestart::write(liggghtsEngine& dem, const label nInserted) const
     marker.add("nInserted", nInserted);
     marker.add("nProcs", Pstream::nProcs());
     marker.add("demTimeStep", dem.timeStepSize()*demUnits::time);
-    if (!marker.regIOobject::write())
+    if
+    (
+        !marker.regIOobject::write()
+     || !mv(marker.objectPath(), marker.objectPath().path()/markerName)
+    )
     {
-        FatalErrorInFunction
-            << "Cannot write " << marker.objectPath() << exit(FatalError);
+        problem = "cannot write " + marker.objectPath();
     }
-    if (!mv(marker.objectPath(), marker.objectPath().path()/markerName))
+    failed();
+    return problem;
+}
+
+
+void Foam::demRestart::abandonWrite(const string& what) const
+{
+    const Time& runTime = mesh_.time();
+    const fileName dir(runTime.timePath());
+
+    // The file system's reason: a probe write of 64 kB beside the time
+    // folder (the writers above do not keep errno), and the space left
+    const fileName probe(dir.path()/(".colloidWriteProbe" + Foam::name(Pstream::myProcNo())));
+    std::string reason = "the probe write succeeded";
     {
-        FatalErrorInFunction
-            << "Cannot rename " << marker.objectPath() << exit(FatalError);
+        std::FILE* f = std::fopen(probe.c_str(), "wb");
+        const std::vector<char> block(1 << 16, 0);
+        errno = 0;
+        if
+        (
+            !f
+         || std::fwrite(block.data(), 1, block.size(), f) != block.size()
+         || std::fflush(f) != 0
+        )
+        {
+            reason = std::strerror(errno);
+        }
+        if (f)
+        {
+            std::fclose(f);
+        }
+        std::remove(probe.c_str());
     }
+    struct statvfs fs;
+    const double freeBytes =
+        statvfs(dir.path().c_str(), &fs) == 0
+      ? double(fs.f_bavail)*double(fs.f_frsize) : -1;
+
+    rmDir(dir);
+
+    FatalErrorInFunction
+        << "Writing time " << runTime.timeName() << " failed: " << what.c_str()
+        << ".  The file system (" << dir.path() << ") says: "
+        << reason.c_str() << "; " << freeBytes << " bytes free.  The"
+        << " incomplete time folder " << dir << " was removed: free some"
+        << " space and resume from the latest complete write time"
+        << " (startFrom latestTime; in system/controlDict)"
+        << exit(FatalError);
 }

@@ -174,7 +174,7 @@ void Foam::liggghtsEngine::file(const std::string& fileName)
 }
 
 
-void Foam::liggghtsEngine::writeRestart(const std::string& pattern)
+std::string Foam::liggghtsEngine::writeRestart(const std::string& pattern)
 {
     const std::string::size_type percent = pattern.find('%');
     if (percent == std::string::npos)
@@ -207,26 +207,23 @@ void Foam::liggghtsEngine::writeRestart(const std::string& pattern)
       + static_cast<long long>(sizeof(double))*n;
     if (n < 0 || size != expected)
     {
-        throw std::runtime_error
-        (
+        return
             "the DEM restart file " + own + " is incomplete ("
-          + std::to_string(size) + " bytes of "
-          + std::to_string(n < 0 ? 0 : expected)
-          + "): is the disk full?"
-        );
+          + std::to_string(size < 0 ? 0 : size) + " bytes"
+          + (n < 0 ? std::string() : " of " + std::to_string(expected))
+          + ")";
     }
     if (worldRank == 0)
     {
         std::ifstream base(named("base"), std::ios::binary | std::ios::ate);
         if (!base || base.tellg() <= 0)
         {
-            throw std::runtime_error
-            (
-                "the DEM restart file " + named("base") + " is empty or"
-                " missing: is the disk full?"
-            );
+            return
+                "the DEM restart file " + named("base")
+              + " is empty or missing";
         }
     }
+    return std::string();
 }
 
 

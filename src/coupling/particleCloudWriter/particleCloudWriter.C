@@ -20,9 +20,9 @@ void append(Foam::DynamicList<Type>& a, const Foam::UList<Type>& b)
 }
 
 
-// Write one per-particle field of the cloud
+// Write one per-particle field of the cloud; false if it failed
 template<class Type>
-void writeField
+bool writeField
 (
     const Foam::passiveParticleCloud& cloud,
     const Foam::word& name,
@@ -34,7 +34,7 @@ void writeField
         cloud.fieldIOobject(name, Foam::IOobject::NO_READ),
         values
     );
-    field.write(values.size() > 0);
+    return field.write(values.size() > 0) || values.empty();
 }
 
 } // End anonymous namespace
@@ -44,7 +44,8 @@ Foam::label Foam::particleCloudWriter::write
 (
     const polyMesh& mesh,
     const word& cloudName,
-    const particles& local
+    const particles& local,
+    bool& ok
 )
 {
     const label nProcs = Pstream::nProcs();
@@ -132,18 +133,18 @@ Foam::label Foam::particleCloudWriter::write
     }
 
     passiveParticleCloud cloud(mesh, cloudName, list);
-    cloud.write();
+    ok = cloud.write() || list.empty();
 
     labelList touchingParticle(nContacts.size());
     forAll(nContacts, k)
     {
         touchingParticle[k] = nContacts[k] > 0 ? 1 : 0;
     }
-    writeField<vector>(cloud, "U", velocity);
-    writeField<scalar>(cloud, "d", diameter);
-    writeField<label>(cloud, "nContacts", nContacts);
-    writeField<label>(cloud, "touchingParticle", touchingParticle);
-    writeField<label>(cloud, "touchingWall", touchingWall);
+    ok = writeField<vector>(cloud, "U", velocity) && ok;
+    ok = writeField<scalar>(cloud, "d", diameter) && ok;
+    ok = writeField<label>(cloud, "nContacts", nContacts) && ok;
+    ok = writeField<label>(cloud, "touchingParticle", touchingParticle) && ok;
+    ok = writeField<label>(cloud, "touchingWall", touchingWall) && ok;
 
     return returnReduce(label(position.size()), sumOp<label>());
 }

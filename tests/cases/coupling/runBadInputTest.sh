@@ -6,6 +6,7 @@
 #   variants: missingKeyword negativeDiameter negativeDensity
 #             unknownDragModel inconsistentDeltaT demStepTooLong
 #             gravityInScript demScriptError resumeIncomplete
+#             misspeltKeyword misspeltTopKeyword diameterMismatch lostParticle
 set -e
 export PYTHONDONTWRITEBYTECODE=1   # no __pycache__ in the source tree
 variant=$1
@@ -53,6 +54,23 @@ case $variant in
         # LIGGGHTS exits by itself; its error must reach the solver's output
         echo "fix oops all noSuchFixStyle" >> constant/DEM/in.liggghts
         expect="ERROR: Invalid fix style: \"noSuchFixStyle\"" ;;
+    misspeltKeyword)
+        # an optional keyword misspelt: not silently ignored
+        foamDictionary $props -entry DEM/scren -add yes > /dev/null
+        expect="Unknown keyword 'scren' in .*couplingProperties.DEM\"?; did you mean 'screen'\?" ;;
+    misspeltTopKeyword)
+        foamDictionary $props -entry forceModel -add "(gravityBuoyancy)" > /dev/null
+        expect="Unknown keyword 'forceModel' in .*couplingProperties\"?; did you mean 'forceModels'\?" ;;
+    diameterMismatch)
+        # the DEM's particles are not those of the settings
+        echo "set group all diameter 2.0" >> constant/DEM/in.liggghts
+        expect="1 particles of the DEM \(e.g. diameter 2e-06 m, density .*\) are not those of .*particles" ;;
+    lostParticle)
+        # a particle thrown out of the DEM box, LIGGGHTS told to ignore it:
+        # the first write stops the run (its fields are written: allowed)
+        printf 'thermo_modify lost ignore\nvelocity all set 1e4 0 0\n' >> constant/DEM/in.liggghts
+        filesAllowed=yes
+        expect="1 particles were lost by the DEM .*allowLostParticles yes" ;;
     resumeIncomplete)
         # a later time folder without the DEM state (as one killed while
         # it was written) and startFrom latestTime: not resumed from

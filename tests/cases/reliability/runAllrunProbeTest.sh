@@ -1,0 +1,125 @@
+#!/bin/bash
+# The slot-coater tutorial's Allrun (at test size, tests/cases/slotCoater/
+# testSizeCase.sh) tried with the faults and mistakes a user makes: each
+# probe must end with the exit status, the message and the files it
+# promises, never an exit 0 that did not run.
+#
+#   runAllrunProbeTest.sh probe workDir
+#
+# probes:
+#   nuZero            nu 0 in system/slotCoaterParameters: stops before any
+#                     step, naming the file, keyword, value and range
+#   notConverged      nu 1e-9: the steady flow does not converge; stops
+#                     saying so, no particle run
+#   fillTooDense      solidsFraction 0.5: the fill reaches less; stops
+#                     with the reached fraction, no fill.data, no run
+#   rerunAfterFailure a misspelt DEM command: stops with LIGGGHTS' error;
+#                     after the fix, ./Allrun runs the particles again
+#   shortEndTimeParallel  -parallel -endTime 2.5e-7 (not a write time):
+#                     exit 0, the end time written and reconstructed
+#   resumeAfterKill   ./Allrun killed (SIGKILL, its whole session) after
+#                     the write at 2e-7; ./Allrun -resume continues from
+#                     2e-7 to the end time 6e-7; -resume with nothing to
+#                     resume from stops saying so
+set -u
+probe=$1
+work=$2
+here=$(cd "$(dirname "$0")" && pwd)
+source "$here/testEnvironment.sh"
+
+# The test-size copy of the tutorial in work (cd there)
+( here="$here/../slotCoater"; source "$here/testSizeCase.sh" ) || exit 1
+cd "$work"
+
+# The terminal output of ./Allrun, outside the case (Allrun cleans log.*)
+out="$work.Allrun.out"
+
+status=0
+fail() { echo "FAIL: $*"; status=1; }
+
+# expectFailure 'message regex' [Allrun args]: non-zero exit, message on
+# the terminal
+expectFailure()
+{
+    local expect=$1
+    shift
+    ./Allrun "$@" > "$out" 2>&1
+    local rc=$?
+    [ $rc -ne 0 ] || fail "./Allrun $* exited 0"
+    grep -E -q "$expect" "$out" || fail "no message matching: $expect"
+    echo "./Allrun $*: exit $rc; $(grep -E -m1 "$expect" "$out")"
+}
+
+# noParticleRun: nothing of a particle run was made
+noParticleRun()
+{
+    [ ! -e log.colloidDEMFoam ] || fail "colloidDEMFoam was run"
+    local t
+    t=$(ls -d [0-9]* 2>/dev/null | grep -E '^[-+.0-9eE]+$' | grep -v '^0$' || true)
+    [ -z "$t" ] || fail "time folders written: $t"
+}
+
+setParam()
+{
+    sed -i "s/^$1 .*/$1 $2;/" system/slotCoaterParameters
+}
+
+case "$probe" in
+nuZero)
+    setParam nu 0
+    expectFailure "system/slotCoaterParameters: keyword 'nu' is 0; allowed range: 0 < nu"
+    [ ! -e log.blockMesh ] || fail "blockMesh was run"
+    noParticleRun ;;
+
+notConverged)
+    setParam nu 1e-9
+    expectFailure "The steady flow did not converge within 4000 iterations"
+    noParticleRun ;;
+
+fillTooDense)
+    setParam solidsFraction 0.5
+    expectFailure "The initial fill holds [0-9]+ particles of the [0-9]+ that solidsFraction 0.5"
+    [ ! -e DEM/fill.data ] || fail "DEM/fill.data left behind"
+    noParticleRun ;;
+
+rerunAfterFailure)
+    sed -i 's/^pair_coeff /pair_coef /' constant/DEM/in.liggghts
+    expectFailure "ERROR: Unknown command: pair_coef" -endTime 4e-7
+    sed -i 's/^pair_coef /pair_coeff /' constant/DEM/in.liggghts
+    ./Allrun -endTime 4e-7 > "$out" 2>&1 || fail "the re-run failed"
+    grep -q "^End" log.colloidDEMFoam || fail "the re-run did not run colloidDEMFoam"
+    [ -f 4e-07/lagrangian/particles/positions ] || fail "no particles at 4e-07"
+    echo "re-run after the fix: exit 0, $(grep '^Particles:' log.colloidDEMFoam | tail -1)" ;;
+
+shortEndTimeParallel)
+    ./Allrun -parallel -endTime 2.5e-7 > "$out" 2>&1 || fail "exit status $?"
+    [ -f 2.5e-07/lagrangian/particles/positions ] \
+        || fail "end time 2.5e-07 not written/reconstructed"
+    [ -f 2.5e-07/U ] || fail "no fluid at 2.5e-07"
+    echo "-parallel -endTime 2.5e-7: exit 0, last times $(ls -d [0-9]* | grep -E '^[-+.0-9eE]+$' | sort -g | tail -2 | tr '\n' ' ')" ;;
+
+resumeAfterKill)
+    expectFailure "no write time with a complete DEM state" -resume
+    setsid ./Allrun -endTime 6e-7 > "$out.killed" 2>&1 &
+    pid=$!
+    for _ in $(seq 1 6000)
+    do
+        [ -f 2e-07/uniform/colloidCoupling ] && break
+        kill -0 "$pid" 2>/dev/null || break
+        sleep 0.01
+    done
+    pkill -9 -s "$pid" || true
+    wait "$pid" 2>/dev/null
+    [ -f 2e-07/uniform/colloidCoupling ] || fail "the write at 2e-07 did not complete"
+    [ ! -e 6e-07 ] || fail "the run was not killed before its end"
+    ./Allrun -resume > "$out" 2>&1 || fail "./Allrun -resume: exit $?"
+    grep -q "^Resuming from time 2e-07:" log.colloidDEMFoam \
+        || fail "not resumed from 2e-07: $(grep -m1 '^Resuming' log.colloidDEMFoam)"
+    [ -f 6e-07/lagrangian/particles/positions ] || fail "end time 6e-07 not written"
+    echo "killed after 2e-07, ./Allrun -resume: $(grep -m1 '^Resuming' log.colloidDEMFoam)" ;;
+
+*)  echo "unknown probe $probe"; exit 2 ;;
+esac
+
+[ $status -eq 0 ] && echo PASS || { echo "--- $out:"; tail -20 "$out"; }
+exit $status
