@@ -33,14 +33,16 @@ set_tests_properties(case.coupling.settling.meshesAgree PROPERTIES
 foreach(variant missingKeyword negativeDiameter negativeDensity unknownDragModel
                 inconsistentDeltaT demStepTooLong gravityInScript demScriptError
                 resumeIncomplete misspeltKeyword misspeltTopKeyword
-                diameterMismatch lostParticle)
+                diameterMismatch lostParticle particleOutsideBox
+                coincidentParticles purgeWrite)
     add_test(NAME case.coupling.badInput.${variant}
         COMMAND ${couplingDir}/runBadInputTest.sh ${variant} ${couplingWork}/badInput_${variant})
     set_tests_properties(case.coupling.badInput.${variant} PROPERTIES
         TIMEOUT 60 LABELS "case;coupling")
 endforeach()
 foreach(variant resumeIncomplete misspeltKeyword misspeltTopKeyword
-                diameterMismatch lostParticle)
+                diameterMismatch lostParticle particleOutsideBox
+                coincidentParticles purgeWrite)
     set_tests_properties(case.coupling.badInput.${variant} PROPERTIES
         LABELS "case;coupling;reliability")
 endforeach()

@@ -23,8 +23,14 @@
 #   fraction, a re-run after a failed run, -parallel with an end time that
 #   is no write time, a killed run resumed with ./Allrun -resume.  Each
 #   must give its exit status, message and files.
-# coupling.badInput.resumeIncomplete (coupling.cmake, also labelled here):
-#   a later time folder without the DEM state stops the run, naming it.
+# reliability.overlaps.<serial|parallel>: four overlapping pairs of initial
+#   particles, across the three mid-planes (one is the processor boundary
+#   on 2 ranks) and a periodic face, all found and named before LIGGGHTS'
+#   set-up (runOverlapTest.sh).
+# coupling.badInput.<resumeIncomplete, misspeltKeyword, misspeltTopKeyword,
+#   diameterMismatch, lostParticle, particleOutsideBox, coincidentParticles,
+#   purgeWrite> (coupling.cmake, also labelled here): each stops the run
+#   with a message naming the setting or the particles.
 
 set(reliabilityDir ${CMAKE_CURRENT_SOURCE_DIR}/reliability)
 set(reliabilityWork ${CMAKE_CURRENT_BINARY_DIR}/reliability)
@@ -64,3 +70,15 @@ foreach(probe nuZero notConverged fillTooDense rerunAfterFailure
 endforeach()
 set_tests_properties(case.reliability.allrun.shortEndTimeParallel PROPERTIES
     PROCESSORS 2)
+
+foreach(nProcs 1 2)
+    set(name case.reliability.overlaps.serial)
+    if(nProcs EQUAL 2)
+        set(name case.reliability.overlaps.parallel)
+    endif()
+    add_test(NAME ${name}
+        COMMAND ${reliabilityDir}/runOverlapTest.sh ${nProcs}
+                ${reliabilityWork}/overlaps_${nProcs})
+    set_tests_properties(${name} PROPERTIES
+        TIMEOUT 60 LABELS "case;reliability" PROCESSORS ${nProcs})
+endforeach()

@@ -78,13 +78,15 @@ def read_results(run):
 def read_series(run, function, file):
     """Rows of a function object's file over the whole run: a resumed run
     writes its rows under postProcessing/<function>/<start time>/; the
-    folders are joined in time order, each row after the last time kept."""
+    folders are joined in time order, the rows of the run it resumed kept
+    up to its start."""
     folders = glob.glob(os.path.join(run, 'postProcessing', function, '*'))
     rows = []
     for folder in sorted(folders, key=lambda f: float(os.path.basename(f))):
-        for row in read_columns(os.path.join(folder, file)):
-            if not rows or row[0] > rows[-1][0]:
-                rows.append(row)
+        # a later start replaces what an interrupted run wrote after it
+        start = float(os.path.basename(folder))
+        rows = [row for row in rows if row[0] <= start]
+        rows += read_columns(os.path.join(folder, file))
     if not rows:
         raise SystemExit('no %s/*/%s in %s/postProcessing'
                          % (function, file, run))

@@ -98,7 +98,9 @@ int main(int argc, char *argv[])
         Info<< "Progress: " << runTime.timeName() << " of " << endTime
             << " s (" << label(100*done) << " %), "
             << coupling.particleSteps()/max(seconds, 1) << " particle-steps/s,"
-            << " ETA " << label(seconds*(1 - done)/max(done, VSMALL)) << " s"
+            << " ETA "
+            << label(min(seconds*(1 - done)/max(done, VSMALL), scalar(1e9)))
+            << " s"
             << nl
             << "ExecutionTime = " << runTime.elapsedCpuTime() << " s"
             << "  ClockTime = " << runTime.elapsedClockTime() << " s"

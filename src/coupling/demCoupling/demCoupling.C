@@ -1,6 +1,7 @@
 #include "demCoupling.H"
 #include "demUnits.H"
 #include "particleCloudWriter.H"
+#include "initialOverlaps.H"
 #include "fvcGrad.H"
 #include "fvcLaplacian.H"
 #include "fvcDiv.H"
@@ -57,6 +58,21 @@ Foam::particleContext Foam::demCoupling::restContext
 void Foam::demCoupling::checkTimeStep() const
 {
     const Time& runTime = mesh_.time();
+
+    // OpenFOAM deletes the oldest time folder as soon as the new fields
+    // are written, before the new DEM state is complete: a write that
+    // then failed would leave nothing to resume from
+    const label purge =
+        runTime.controlDict().getOrDefault<label>("purgeWrite", 0);
+    if (purge != 0)
+    {
+        FatalIOErrorInFunction(runTime.controlDict())
+            << "Keyword 'purgeWrite' in " << runTime.controlDict().name()
+            << " is " << purge << "; colloidDEMFoam needs 0 (OpenFOAM would"
+            << " delete the oldest time folder before the new one's DEM"
+            << " state is complete).  Delete old time folders yourself"
+            << exit(FatalIOError);
+    }
 
     const scalar deltaT = runTime.deltaTValue();
     const scalar couplingDt = props_.couplingTimeStep();
@@ -229,6 +245,12 @@ void Foam::demCoupling::startDEM()
     }
 
     restart_.addFixes(dem);
+
+    // A fresh start's particles, before LIGGGHTS' set-up meets them
+    if (!restart_.resume())
+    {
+        checkInitialOverlaps(dem, props_.demScript());
+    }
 
     // Full set-up (neighbour lists, initial insertion) without moving
     dem.run(0);
@@ -911,6 +933,12 @@ void Foam::demCoupling::evolve()
             voidfraction_->oldTime();
         }
 
+        // This step's time folder will be written: no stale DEM state in it
+        if (mesh_.time().writeTime())
+        {
+            restart_.invalidate();
+        }
+
         dem.run(props_.couplingInterval());
 
         demSeconds_ += clock.timeIncrement();
@@ -941,6 +969,11 @@ void Foam::demCoupling::write(const bool fieldsWritten)
     if (!returnReduce(fieldsWritten, andOp<bool>()))
     {
         restart_.abandonWrite("the fluid fields could not be written");
+    }
+
+    if (!atStart)
+    {
+        restart_.invalidate();
     }
 
     try

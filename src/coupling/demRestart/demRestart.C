@@ -1,5 +1,6 @@
 #include "demRestart.H"
 #include "IOdictionary.H"
+#include "IFstream.H"
 #include "OSspecific.H"
 #include "Time.H"
 #include "demUnits.H"
@@ -347,9 +348,20 @@ Foam::string Foam::demRestart::write
     marker.add("nInserted", nInserted);
     marker.add("nProcs", Pstream::nProcs());
     marker.add("demTimeStep", dem.timeStepSize()*demUnits::time);
+    // Read back before it counts: a small file can fail unseen when it is
+    // closed on a full disk
+    bool written = marker.regIOobject::write();
+    if (written)
+    {
+        IFstream is(marker.objectPath());
+        const dictionary copy(is);
+        written =
+            copy.getOrDefault<label>("demStep", -1) == label(step)
+         && copy.found("demTimeStep");
+    }
     if
     (
-        !marker.regIOobject::write()
+        !written
      || !mv(marker.objectPath(), marker.objectPath().path()/markerName)
     )
     {
@@ -393,14 +405,33 @@ void Foam::demRestart::abandonWrite(const string& what) const
         statvfs(dir.path().c_str(), &fs) == 0
       ? double(fs.f_bavail)*double(fs.f_frsize) : -1;
 
-    rmDir(dir);
+    // The start time holds the case's own fields: only the output of
+    // this run goes.  Every rank removes its part before any stops.
+    const bool atStart = runTime.timeIndex() == runTime.startTimeIndex();
+    const fileName removed(atStart ? dir/"lagrangian" : dir);
+    rmDir(removed);
+    returnReduce(true, andOp<bool>());
 
     FatalErrorInFunction
         << "Writing time " << runTime.timeName() << " failed: " << what.c_str()
         << ".  The file system (" << dir.path() << ") says: "
         << reason.c_str() << "; " << freeBytes << " bytes free.  The"
-        << " incomplete time folder " << dir << " was removed: free some"
-        << " space and resume from the latest complete write time"
-        << " (startFrom latestTime; in system/controlDict)"
+        << " incomplete " << (atStart ? "output " : "time folder ") << removed
+        << " was removed: free some space and "
+        << (
+               atStart
+             ? "run again"
+             : "resume from the latest complete write time (startFrom"
+               " latestTime; in system/controlDict)"
+           )
         << exit(FatalError);
+}
+
+
+void Foam::demRestart::invalidate() const
+{
+    // A time folder written again (a run resumed from an earlier time
+    // passes the later ones) must not keep the marker of its earlier
+    // content while the new content is written
+    rm(mesh_.time().timePath()/"uniform"/markerName);
 }

@@ -54,6 +54,42 @@ void reportLiggghtsExit()
     {
         std::fprintf(stderr, "    %s\n", line.c_str());
     }
+
+    // What LIGGGHTS' terse messages mean in a coupled run
+    static const char* const hints[][2] =
+    {
+        {
+            "Did not assign all atoms correctly",
+            "some particles of the DEM's data file lie outside its"
+            " simulation box (the box bounds of read_data, or the region of"
+            " create_box): compare their coordinates with the box"
+        },
+        {
+            "Lost atoms",
+            "particles left the DEM box through a non-periodic boundary:"
+            " check the box against the fluid domain and the particles'"
+            " speeds; to go on without them, 'thermo_modify lost ignore' in"
+            " the DEM script and DEM { allowLostParticles yes; } in"
+            " constant/couplingProperties"
+        },
+        {
+            "Unknown command",
+            "a misspelt or unknown LIGGGHTS command in the DEM script (the"
+            " line above the error)"
+        }
+    };
+    for (const auto& hint : hints)
+    {
+        for (const std::string& line : tail)
+        {
+            if (line.find("ERROR") != std::string::npos
+             && line.find(hint[0]) != std::string::npos)
+            {
+                std::fprintf(stderr, "--> That is: %s\n", hint[1]);
+                break;
+            }
+        }
+    }
 }
 
 
@@ -306,6 +342,17 @@ void Foam::liggghtsEngine::box
         lo[k] = domain->boxlo[k];
         hi[k] = domain->boxhi[k];
         periodic[k] = domain->periodicity[k] != 0;
+    }
+}
+
+
+void Foam::liggghtsEngine::subBox(double lo[3], double hi[3]) const
+{
+    const LAMMPS_NS::Domain* domain = engine(lmp_)->domain;
+    for (int k = 0; k < 3; ++k)
+    {
+        lo[k] = domain->sublo[k];
+        hi[k] = domain->subhi[k];
     }
 }
 

@@ -7,6 +7,7 @@
 #             unknownDragModel inconsistentDeltaT demStepTooLong
 #             gravityInScript demScriptError resumeIncomplete
 #             misspeltKeyword misspeltTopKeyword diameterMismatch lostParticle
+#             particleOutsideBox coincidentParticles purgeWrite
 set -e
 export PYTHONDONTWRITEBYTECODE=1   # no __pycache__ in the source tree
 variant=$1
@@ -65,6 +66,21 @@ case $variant in
         # the DEM's particles are not those of the settings
         echo "set group all diameter 2.0" >> constant/DEM/in.liggghts
         expect="1 particles of the DEM \(e.g. diameter 2e-06 m, density .*\) are not those of .*particles" ;;
+    purgeWrite)
+        foamDictionary system/controlDict -entry purgeWrite -set 2 > /dev/null
+        expect="Keyword 'purgeWrite' in .*controlDict\"? is 2; colloidDEMFoam needs 0" ;;
+    coincidentParticles)
+        # two particles at one place: named, before LIGGGHTS meets them
+        sed -i 's/^create_atoms .*/&\n&/' constant/DEM/in.liggghts
+        expect="1 pairs of the DEM's initial particles .* overlap by more than 10 % .*" ;;
+    particleOutsideBox)
+        # a particle of the data file outside the DEM box: named as such
+        printf '%s\n' "LIGGGHTS data file" "" "1 atoms" "1 atom types" "" \
+            "0 100 xlo xhi" "0 100 ylo yhi" "0 50 zlo zhi" "" "Atoms" "" \
+            "1 1 1.0 2.5 150.0 31.7 23.9" > constant/DEM/outside.data
+        sed -i '/^region /d; /^create_box /d; /^create_atoms /d' constant/DEM/in.liggghts
+        sed -i 's|^communicate .*|&\nread_data ${colloid_case}/constant/DEM/outside.data|' constant/DEM/in.liggghts
+        expect="That is: some particles of the DEM's data file lie outside its simulation box" ;;
     lostParticle)
         # a particle thrown out of the DEM box, LIGGGHTS told to ignore it:
         # the first write stops the run (its fields are written: allowed)

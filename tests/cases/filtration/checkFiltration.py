@@ -5,29 +5,41 @@ already run on it):
 - with --ruth: t/V against V is a straight line from 10 % of the filtrate
   to the end of filtration (Ruth): R^2 >= 0.98 (always printed);
 - no particle passed the filter medium (none below y = 0 at any write);
-- with a reference run (the same case, serial): the filtrate volume at
-  the end time within 1 %.
+- with a reference run (the same case, serial; this one on 2 ranks):
+  * the same run until round-off grows: the flow rate at every fluid step
+    up to 20 us within 1e-9 of the serial one (measured: 1.5e-11, the
+    written precision; a parallel error shows at once, e.g. a force or a
+    particle missing at a processor boundary);
+  * afterwards the two runs part as any two runs of a granular packing do
+    (the difference grows from 1e-11 at 40 us to 1e-4 at 100 us and to
+    percents of the flow rate as the cake forms), so the filtrate volume
+    at the end time is compared with the spread of statistically
+    equivalent runs: four serial runs from different random suspensions
+    (makeSuspension.py seeds 2718, 1, 2, 3) gave 5.709, 5.755, 5.800 and
+    5.691e-13 m^3, a standard deviation of 0.84 %, so 1.2 % for the
+    difference of two runs; the tolerance is 3 % (2.5 of it).  Two
+    parallel runs measured: -1.03 % and -0.73 %.
 
 usage: checkFiltration.py [--ruth] runDir [referenceRunDir]
 """
-import glob
 import os
 import sys
 
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)),
                                 '..', '..', '..', 'tutorials', 'filtration'))
 from filtrationResults import read_results as results  # noqa: E402
+from filtrationResults import read_series  # noqa: E402
 
 R2_MIN = 0.98
-PARALLEL_TOL = 0.01
+EARLY_TIME = 2e-5       # [s] the runs are still the same run
+EARLY_TOL = 1e-9
+PARALLEL_TOL = 0.03
 
 
 def flow(run):
     """[(time, flow rate)] through the outlet, every fluid step."""
-    return [tuple(float(x) for x in line.split()) for line in open(glob.glob(
-        os.path.join(run, 'postProcessing', 'filtrate', '*',
-                     'surfaceFieldValue.dat'))[0])
-            if line.strip() and not line.startswith('#')]
+    return [tuple(row[:2]) for row in
+            read_series(run, 'filtrate', 'surfaceFieldValue.dat')]
 
 
 def volume(run):
@@ -61,6 +73,16 @@ def main():
     ok = growing and finished and below == 0 and (r2 >= R2_MIN or not ruth)
 
     if len(args) > 1:
+        early = [(t, q) for t, q in flow(run) if t <= EARLY_TIME]
+        early_ref = dict((t, q) for t, q in flow(args[1]) if t <= EARLY_TIME)
+        same = len(early) > 10 and all(t in early_ref for t, _ in early)
+        worst = max((abs(q/early_ref[t] - 1) for t, q in early if t in early_ref),
+                    default=float('inf'))
+        print('flow rate up to %g s (%d steps): largest difference from the'
+              ' serial run %.3g (at most %g)'
+              % (EARLY_TIME, len(early), worst, EARLY_TOL))
+        ok &= same and worst <= EARLY_TOL
+
         v, v_ref = volume(run), volume(args[1])
         err = v/v_ref - 1
         print('filtrate volume %.6g m^3, serial %.6g m^3: %+.3f %% (tolerance'

@@ -116,6 +116,8 @@ resumeAfterKill)
     grep -q "^Resuming from time 2e-07:" log.colloidDEMFoam \
         || fail "not resumed from 2e-07: $(grep -m1 '^Resuming' log.colloidDEMFoam)"
     [ -f 6e-07/lagrangian/particles/positions ] || fail "end time 6e-07 not written"
+    later=$(ls -d [0-9]* | grep -E '^[-+.0-9eE]+$' | awk '$1 > 6.000001e-07')
+    [ -z "$later" ] || fail "ran past the end time 6e-07 of the run resumed: $later"
     echo "killed after 2e-07, ./Allrun -resume: $(grep -m1 '^Resuming' log.colloidDEMFoam)" ;;
 
 *)  echo "unknown probe $probe"; exit 2 ;;

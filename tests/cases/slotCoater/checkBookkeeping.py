@@ -6,8 +6,9 @@ the numbers its settings imply.
 2. At every write of log.colloidDEMFoam: present (LIGGGHTS' atom count) =
    inserted (counted by the coupling as particles first appear) - removed
    (counted by the DEM's outflow fix), and the write time's cloud
-   (lagrangian/particles) holds the particles the log says it wrote: those
-   present inside the fluid (the feed zone above the inlet is outside).
+   (lagrangian/particles) holds the particles present less those the
+   coupling step located outside the fluid (the feed zone above the
+   inlet).
 3. The initial fill (DEM/fill.data) holds, per region (gap and slot),
    solidsFraction x region volume / V_p particles (LIGGGHTS rounds: +-1).
 4. inserted = fill + the feed: the feed zone (two diameters above the
@@ -31,6 +32,7 @@ sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)),
 import particleCloud  # noqa: E402
 
 LINE = re.compile(r"Particles: present (\d+), inserted (\d+), removed (\d+); written (\d+)")
+COUPLING = re.compile(r"Coupling: (\d+) particles, (\d+) outside the fluid")
 
 
 def liggghtsVariables(path):
@@ -52,17 +54,29 @@ def main():
     check(bool(times) and abs(times[-1] - endTime) <= 1e-9*endTime,
           "run reached endTime %g s (last time %s)" % (endTime, times[-1] if times else "none"))
 
-    counts = [tuple(int(g) for g in m.groups()) for m in LINE.finditer(log)]
+    # Each write's counts, with the coupling step's own count of particles
+    # outside the fluid (the locator's, not the writer's: the feed zone
+    # above the inlet), which the line before it gives
+    counts = []
+    located = None
+    for line in log.splitlines():
+        m = COUPLING.match(line)
+        if m:
+            located = tuple(int(g) for g in m.groups())
+        m = LINE.match(line)
+        if m:
+            counts.append(tuple(int(g) for g in m.groups()) + (located,))
     files = particleCloud.write_times(case)
     check(len(counts) == len(files) and len(counts) > 2,
           "%d writes, %d particle files" % (len(counts), len(files)))
-    for (present, inserted, removed, written), path in zip(counts, files):
+    for (present, inserted, removed, written, located), path in zip(counts, files):
         nFile = len(particleCloud.read(path)["position"])
-        # written: those inside the fluid (not the feed zone above the inlet)
-        check(present == inserted - removed and nFile == written <= present,
-              "%-20s present %d = inserted %d - removed %d; written %d, read %d"
-              % (os.path.basename(path), present, inserted, removed, written, nFile))
-    present, inserted, removed, written = counts[-1]
+        check(present == inserted - removed and located is not None
+              and located[0] == present and nFile == written == present - located[1],
+              "%-20s present %d = inserted %d - removed %d; read %d = present - %s outside"
+              % (os.path.basename(path), present, inserted, removed, nFile,
+                 located[1] if located else "?"))
+    present, inserted, removed, written, located = counts[-1]
 
     g = liggghtsVariables(os.path.join(case, "DEM", "slotCoater.liggghts"))
     params = open(os.path.join(case, "system", "slotCoaterParameters")).read()

@@ -1,0 +1,262 @@
+#include "initialOverlaps.H"
+#include "demUnits.H"
+#include "pointField.H"
+#include "scalarField.H"
+#include "labelList.H"
+#include "DynamicList.H"
+#include "PstreamBuffers.H"
+#include "HashTable.H"
+#include "FixedList.H"
+#include "OStringStream.H"
+
+#include <algorithm>
+
+namespace
+{
+
+// Particles as the check sees them: centre [um], radius [um], id
+struct sphereSet
+{
+    Foam::DynamicList<Foam::point> x;
+    Foam::DynamicList<Foam::scalar> r;
+    Foam::DynamicList<Foam::label> id;
+
+    void append(const Foam::point& p, const Foam::scalar radius, const Foam::label i)
+    {
+        x.append(p);
+        r.append(radius);
+        id.append(i);
+    }
+};
+
+// Overlap limits, as fractions of the smaller radius
+constexpr Foam::scalar stopFraction = 0.1;
+constexpr Foam::scalar warnFraction = 0.01;
+
+// A pair found overlapping: ids, centres [um], overlap / smaller radius
+struct overlapPair
+{
+    Foam::label a, b;
+    Foam::point xa, xb;
+    Foam::scalar fraction;
+};
+
+} // End anonymous namespace
+
+
+void Foam::checkInitialOverlaps
+(
+    const liggghtsEngine& dem,
+    const fileName& script
+)
+{
+    const int n = dem.nLocal();
+    double** x = dem.x();
+    const double* r = dem.radius();
+    const int* tag = dem.tag();
+
+    double boxLo[3], boxHi[3], subLo[3], subHi[3];
+    bool periodic[3];
+    dem.box(boxLo, boxHi, periodic);
+    dem.subBox(subLo, subHi);
+
+    scalar rMax = 0;
+    for (int i = 0; i < n; ++i)
+    {
+        rMax = max(rMax, r[i]);
+    }
+    reduce(rMax, maxOp<scalar>());
+    if (rMax <= 0)
+    {
+        return;
+    }
+    const scalar layer = 4*rMax;    // two largest diameters
+
+    // This rank's particles, and those near its part of the box
+    sphereSet local;
+    sphereSet nearFaces;
+    for (int i = 0; i < n; ++i)
+    {
+        const point p(x[i][0], x[i][1], x[i][2]);
+        local.append(p, r[i], tag[i]);
+        bool near = false;
+        for (direction k = 0; k < 3; ++k)
+        {
+            near = near || p[k] - subLo[k] < layer || subHi[k] - p[k] < layer;
+        }
+        if (near)
+        {
+            nearFaces.append(p, r[i], tag[i]);
+        }
+    }
+
+    // Candidates: own particles, the other ranks' near-face particles
+    sphereSet candidates(local);
+    if (Pstream::parRun())
+    {
+        PstreamBuffers buffers(Pstream::commsTypes::nonBlocking);
+        for (label proci = 0; proci < Pstream::nProcs(); ++proci)
+        {
+            if (proci != Pstream::myProcNo())
+            {
+                UOPstream os(proci, buffers);
+                os << pointField(nearFaces.x) << scalarField(nearFaces.r)
+                   << labelList(nearFaces.id);
+            }
+        }
+        buffers.finishedSends();
+        for (label proci = 0; proci < Pstream::nProcs(); ++proci)
+        {
+            if (proci != Pstream::myProcNo())
+            {
+                UIPstream is(proci, buffers);
+                pointField px;
+                scalarField pr;
+                labelList pid;
+                is >> px >> pr >> pid;
+                forAll(px, j)
+                {
+                    candidates.append(px[j], pr[j], pid[j]);
+                }
+            }
+        }
+    }
+
+    // Periodic images of the candidates near the box's periodic faces
+    for (direction k = 0; k < 3; ++k)
+    {
+        if (!periodic[k])
+        {
+            continue;
+        }
+        const scalar length = boxHi[k] - boxLo[k];
+        const label nBefore = candidates.x.size();
+        for (label j = 0; j < nBefore; ++j)
+        {
+            point p = candidates.x[j];
+            if (p[k] - boxLo[k] < layer)
+            {
+                p[k] += length;
+            }
+            else if (boxHi[k] - p[k] < layer)
+            {
+                p[k] -= length;
+            }
+            else
+            {
+                continue;
+            }
+            candidates.append(p, candidates.r[j], candidates.id[j]);
+        }
+    }
+
+    // Candidates in cells of one largest diameter
+    const scalar h = 2*rMax;
+    auto cellOf = [&](const point& p)
+    {
+        return FixedList<label, 3>
+        ({
+            label(std::floor(p.x()/h)),
+            label(std::floor(p.y()/h)),
+            label(std::floor(p.z()/h))
+        });
+    };
+    HashTable<DynamicList<label>, FixedList<label, 3>,
+        FixedList<label, 3>::Hash<>> grid;
+    forAll(candidates.x, j)
+    {
+        grid(cellOf(candidates.x[j])).append(j);
+    }
+
+    // Each pair once: from the particle with the lower id, where it lives
+    DynamicList<overlapPair> pairs;
+    forAll(local.x, i)
+    {
+        const FixedList<label, 3> c = cellOf(local.x[i]);
+        for (label a = -1; a <= 1; ++a)
+        for (label b = -1; b <= 1; ++b)
+        for (label e = -1; e <= 1; ++e)
+        {
+            const auto iter =
+                grid.cfind(FixedList<label, 3>({c[0] + a, c[1] + b, c[2] + e}));
+            if (!iter.found())
+            {
+                continue;
+            }
+            for (const label j : *iter)
+            {
+                if (candidates.id[j] <= local.id[i])
+                {
+                    continue;
+                }
+                const scalar dist = mag(candidates.x[j] - local.x[i]);
+                const scalar rMin = min(local.r[i], candidates.r[j]);
+                const scalar fraction =
+                    (local.r[i] + candidates.r[j] - dist)/rMin;
+                if (fraction > warnFraction)
+                {
+                    pairs.append
+                    ({
+                        local.id[i], candidates.id[j],
+                        local.x[i], candidates.x[j], fraction
+                    });
+                }
+            }
+        }
+    }
+
+    // Report: counts over all ranks, the worst pairs of each rank
+    label nWarn = 0, nStop = 0;
+    for (const overlapPair& p : pairs)
+    {
+        (p.fraction > stopFraction ? nStop : nWarn)++;
+    }
+    reduce(nWarn, sumOp<label>());
+    reduce(nStop, sumOp<label>());
+    if (nWarn + nStop == 0)
+    {
+        return;
+    }
+
+    std::sort
+    (
+        pairs.begin(), pairs.end(),
+        [](const overlapPair& p, const overlapPair& q)
+        { return p.fraction > q.fraction; }
+    );
+    OStringStream list;
+    for (label k = 0; k < min(label(5), pairs.size()); ++k)
+    {
+        const overlapPair& p = pairs[k];
+        list<< nl << "    particles " << p.a << " at "
+            << demUnits::length*p.xa << " m and " << p.b << " at "
+            << demUnits::length*p.xb << " m: overlap "
+            << 100*p.fraction << " % of the smaller radius"
+            << (p.fraction > 1.9 ? " (centres nearly coincide)" : "");
+    }
+    List<string> lists(Pstream::nProcs());
+    lists[Pstream::myProcNo()] = list.str();
+    Pstream::gatherList(lists);     // text of at most 5 pairs per rank
+    string text;
+    for (const string& s : lists)
+    {
+        text += s;
+    }
+    // Every rank holds the message: the first to stop ends the run
+    Pstream::scatter(text);
+
+    if (nStop)
+    {
+        FatalErrorInFunction
+            << nStop << " pairs of the DEM's initial particles (DEM script "
+            << script << ") overlap by more than " << 100*stopFraction
+            << " % of the smaller radius, the worst:" << text.c_str() << nl
+            << "Place the particles apart (a fill with a minimum gap, or"
+            << " the data file's coordinates)" << exit(FatalError);
+    }
+    WarningInFunction
+        << nWarn << " pairs of the DEM's initial particles (DEM script "
+        << script << ") overlap by more than " << 100*warnFraction
+        << " % of the smaller radius (their elastic energy is released in"
+        << " the first steps), the worst:" << text.c_str() << endl;
+}
