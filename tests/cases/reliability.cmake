@@ -21,7 +21,8 @@
 #   user's faults and mistakes (runAllrunProbeTest.sh): nu 0, a steady
 #   flow that does not converge, a fill that cannot reach its solids
 #   fraction, a re-run after a failed run, -parallel with an end time that
-#   is no write time, a killed run resumed with ./Allrun -resume.  Each
+#   is no write time, a killed run resumed with ./Allrun -resume, a DEM
+#   step above the plugin's contact limit (the stop advises DEM timeStep).  Each
 #   must give its exit status, message and files.
 # reliability.overlaps.<serial|parallel>: four overlapping pairs of initial
 #   particles, across the three mid-planes (one is the processor boundary
@@ -61,7 +62,7 @@ set_tests_properties(case.reliability.diskFull PROPERTIES
     FIXTURES_REQUIRED slotCoater_serial)
 
 foreach(probe nuZero notConverged fillTooDense rerunAfterFailure
-              shortEndTimeParallel resumeAfterKill)
+              shortEndTimeParallel resumeAfterKill demStepTooLong)
     add_test(NAME case.reliability.allrun.${probe}
         COMMAND ${reliabilityDir}/runAllrunProbeTest.sh ${probe}
                 ${reliabilityWork}/allrun_${probe})

@@ -17,6 +17,8 @@
 #                     after the fix, ./Allrun runs the particles again
 #   shortEndTimeParallel  -parallel -endTime 2.5e-7 (not a write time):
 #                     exit 0, the end time written and reconstructed
+#   demStepTooLong    DEM { timeStep } above the plugin's contact limit:
+#                     the stop advises the setting that applies (seconds)
 #   resumeAfterKill   ./Allrun killed (SIGKILL, its whole session) after
 #                     the write at 2e-7; ./Allrun -resume continues from
 #                     2e-7 to the end time 6e-7; -resume with nothing to
@@ -119,6 +121,23 @@ resumeAfterKill)
     later=$(ls -d [0-9]* | grep -E '^[-+.0-9eE]+$' | awk '$1 > 6.000001e-07')
     [ -z "$later" ] || fail "ran past the end time 6e-07 of the run resumed: $later"
     echo "killed after 2e-07, ./Allrun -resume: $(grep -m1 '^Resuming' log.colloidDEMFoam)" ;;
+
+demStepTooLong)
+    # 1e-9 s passes the coupling's own check (the Stokes time, 1.25e-8 s)
+    # but not the plugin's contact limit: its stop names the setting that
+    # applies, in seconds, at 0.05 x the contact duration it prints
+    sed -i 's/^\( *timeStep *\)1e-10;/\11e-9;/' constant/couplingProperties
+    sed -i 's/^deltaT .*/deltaT          1e-7;/' system/controlDict
+    expectFailure "set DEM \{ timeStep [0-9.e+-]+; \} \(seconds\) or less in constant/couplingProperties" -endTime 4e-7
+    line=$(grep -a -m1 "set DEM { timeStep" "$out")
+    awk -v l="$line" 'BEGIN {
+        if (!match(l, /contact duration[^(]*\(([0-9.e+-]+) s\)/)) exit 1
+        split(substr(l, RSTART, RLENGTH), a, "(")
+        duration = a[2] + 0
+        if (!match(l, /timeStep [0-9.e+-]+;/)) exit 1
+        advised = substr(l, RSTART + 9, RLENGTH - 10) + 0
+        exit !(advised > 0 && (advised - 0.05*duration)^2 < (1e-5*advised)^2) }' \
+        || fail "the advised timeStep is not 0.05 x the contact duration: $line" ;;
 
 *)  echo "unknown probe $probe"; exit 2 ;;
 esac
