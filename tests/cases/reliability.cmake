@@ -28,6 +28,8 @@
 #   particles, across the three mid-planes (one is the processor boundary
 #   on 2 ranks) and a periodic face, all found and named before LIGGGHTS'
 #   set-up (runOverlapTest.sh).
+# reliability.outsideFluid: a particle outside the fluid mesh at the start
+#   is counted and named (id, position) in a warning; the run goes on.
 # coupling.badInput.<resumeIncomplete, misspeltKeyword, misspeltTopKeyword,
 #   diameterMismatch, lostParticle, particleOutsideBox, coincidentParticles,
 #   purgeWrite> (coupling.cmake, also labelled here): each stops the run
@@ -83,3 +85,8 @@ foreach(nProcs 1 2)
     set_tests_properties(${name} PROPERTIES
         TIMEOUT 60 LABELS "case;reliability" PROCESSORS ${nProcs})
 endforeach()
+
+add_test(NAME case.reliability.outsideFluid
+    COMMAND ${reliabilityDir}/runOutsideFluidTest.sh ${reliabilityWork}/outsideFluid)
+set_tests_properties(case.reliability.outsideFluid PROPERTIES
+    TIMEOUT 60 LABELS "case;reliability")

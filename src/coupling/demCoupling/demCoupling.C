@@ -2,6 +2,7 @@
 #include "demUnits.H"
 #include "particleCloudWriter.H"
 #include "initialOverlaps.H"
+#include "OStringStream.H"
 #include "fvcGrad.H"
 #include "fvcLaplacian.H"
 #include "fvcDiv.H"
@@ -691,6 +692,10 @@ Foam::demCoupling::demCoupling
     {
         startDEM();
         gatherRecords();
+        if (!restart_.resume())
+        {
+            reportOutsideFluid();
+        }
         updateForces();
     }
     catch (const std::exception& e)
@@ -706,6 +711,47 @@ Foam::demCoupling::~demCoupling()
 
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * //
+
+void Foam::demCoupling::reportOutsideFluid() const
+{
+    const liggghtsEngine& dem = engine_();
+    double** x = dem.x();
+    const int* tag = dem.tag();
+
+    label nOutside = 0;
+    OStringStream list;
+    forAll(proc_, i)
+    {
+        if (proc_[i] < 0)
+        {
+            if (nOutside < 5)
+            {
+                list<< nl << "    particle " << tag[i] << " at "
+                    << demUnits::length*vector(x[i][0], x[i][1], x[i][2])
+                    << " m";
+            }
+            ++nOutside;
+        }
+    }
+    List<string> lists(Pstream::nProcs());
+    lists[Pstream::myProcNo()] = list.str();
+    Pstream::gatherList(lists);     // at most 5 lines per rank
+    reduce(nOutside, sumOp<label>());
+    if (nOutside)
+    {
+        string text;
+        for (const string& part : lists)
+        {
+            text += part;
+        }
+        WarningInFunction
+            << nOutside << " particles of the DEM lie outside the fluid mesh"
+            << " at the start (they feel no drag there until they enter"
+            << " it; an insertion zone outside the fluid is one reason):"
+            << text.c_str() << endl;
+    }
+}
+
 
 void Foam::demCoupling::updateForces()
 {
