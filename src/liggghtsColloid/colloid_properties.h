@@ -11,6 +11,7 @@
 #define COLLOID_PROPERTIES_H
 
 #include <cmath>
+#include <algorithm>
 #include <cstdio>
 #include <stdexcept>
 #include <string>
@@ -59,11 +60,17 @@ public:
         return value;
     }
 
-    // as scalar(), but absent means fallback (given in SI)
+    // as scalar(), but absent means fallback (given in SI); a property
+    // defined under a name two edits or fewer from it is taken for a
+    // misspelling and stops the run (else the default would be used
+    // without a word)
     double optionalScalar(const char *name, double fallback, double toSI, double lo, double hi, const char *siUnit)
     {
         if (!modify_->find_fix_property(name, "property/global", "scalar", 0, 0, caller_, false))
+        {
+            misspelt(name);
             return fallback;
+        }
         return scalar(name, toSI, lo, hi, siUnit);
     }
 
@@ -188,6 +195,55 @@ private:
                 "allowed range [%g, %g] %s",
                 caller_, name, where, value, siUnit, lo, hi, siUnit);
             error_->all(FLERR, msg);
+        }
+    }
+
+    // Stop if a scalar property/global is defined under a near miss of
+    // name: one letter dropped, added, changed, or two swapped.  (LIGGGHTS
+    // keeps the names of its property fixes private: the near misses are
+    // looked up instead, about 2500 for a name of 20 letters, once.)
+    void misspelt(const char *name)
+    {
+        const std::string n(name);
+        std::vector<std::string> candidates;
+        const std::string letters =
+            "abcdefghijklmnopqrstuvwxyzABCDEFGHIJKLMNOPQRSTUVWXYZ";
+        for (size_t i = 0; i < n.size(); i++)
+        {
+            candidates.push_back(n.substr(0, i) + n.substr(i + 1));
+            if (i + 1 < n.size())
+            {
+                std::string t(n);
+                std::swap(t[i], t[i + 1]);
+                candidates.push_back(t);
+            }
+            for (const char c : letters)
+            {
+                if (c == n[i]) continue;
+                std::string t(n);
+                t[i] = c;
+                candidates.push_back(t);
+            }
+        }
+        for (size_t i = 0; i <= n.size(); i++)
+        {
+            for (const char c : letters)
+            {
+                candidates.push_back(n.substr(0, i) + c + n.substr(i));
+            }
+        }
+        for (const std::string & c : candidates)
+        {
+            if (c == n || c.empty()) continue;
+            if (modify_->find_fix_property(c.c_str(), "property/global", "scalar", 0, 0, caller_, false))
+            {
+                char msg[512];
+                std::snprintf(msg, sizeof(msg),
+                    "%s: property/global '%s' is read by no model; did you mean "
+                    "'%s'? (optional: its default would be used)",
+                    caller_, c.c_str(), name);
+                error_->all(FLERR, msg);
+            }
         }
     }
 

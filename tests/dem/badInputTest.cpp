@@ -158,3 +158,16 @@ TEST(badInput, badInputMissingRestitution)
     EXPECT_NE(r.output.find("coefficientRestitution"), std::string::npos) << r.output;
     EXPECT_NE(r.output.find("walton_braun"), std::string::npos) << r.output;
 }
+
+
+TEST(badInput, badInputMisspeltOptionalProperty)
+{
+    // lubricationInnerCutoff is optional: misspelt, it would be ignored
+    // and the default used
+    Properties p = validProperties();
+    p["lubricationInnerCutof"] = "scalar 0.002";
+    const ProcessResult r = runLiggghts("badInputMisspeltOptionalProperty", script(p));
+    EXPECT_GT(r.status, 0) << r.output;
+    EXPECT_NE(r.output.find("property/global 'lubricationInnerCutof'"), std::string::npos) << r.output;
+    EXPECT_NE(r.output.find("did you mean 'lubricationInnerCutoff'?"), std::string::npos) << r.output;
+}

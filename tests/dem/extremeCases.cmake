@@ -40,6 +40,7 @@ if(LIGGGHTS_EXECUTABLE)
             badInputValidScriptRuns badInputNegativeStiffness
             badInputRestitutionAboveOne badInputZetaAbove300mV
             badInputHamakerTooLarge badInputNoSalt badInputMissingRestitution
+            badInputMisspeltOptionalProperty
             startupLimitSmallParticles startupLimitSmallParticlesOverride
             startupLimitLargeHamaker startupLimitStiffWall
             startupLimitSoftContact startupLimitSoftWall
