@@ -37,6 +37,19 @@ param()
         || { echo "$0: no '$1' in system/filtrationParameters" 1>&2; exit 1; }
     echo "$value"
 }
+# The physical settings, where they are set (the plugin checks the
+# contact and surface-force values again, in its units)
+. "$COLLOIDFOAM_DIR"/etc/AllrunFunctions
+params=system/filtrationParameters
+for key in width cellSize mediumThickness filtrationPressure \
+    mediumResistance rho mu particleDiameter particleDensity youngsModulus \
+    saltConcentration
+do
+    checkParameter $params $key 0 -
+done
+checkParameter $params solidsFraction 0 0.64
+checkParameter $params poissonsRatio -1 0.5
+
 # The DEM's values in its units (um, nN/um^2 = 1e3 Pa, fJ)
 width=$(param width); height=$(param slurryHeight)
 d=$(param particleDiameter); phi=$(param solidsFraction)
