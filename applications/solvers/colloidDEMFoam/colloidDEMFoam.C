@@ -29,6 +29,7 @@ Description
 #include "fvCFD.H"
 #include "demCoupling.H"
 #include "averagedFluid.H"
+#include "atomicFileOperation.H"
 
 int main(int argc, char *argv[])
 {
@@ -41,6 +42,10 @@ int main(int argc, char *argv[])
 
     #include "setRootCase.H"
     #include "createTime.H"
+
+    // Every file written under a temporary name, renamed when complete
+    fileOperations::atomicFileOperation::install();
+
     #include "createMesh.H"
     #include "createFields.H"
 

@@ -2,6 +2,7 @@
 #include "demUnits.H"
 #include "particleCloudWriter.H"
 #include "initialOverlaps.H"
+#include "atomicFileOperation.H"
 #include "OStringStream.H"
 #include "fvcGrad.H"
 #include "fvcLaplacian.H"
@@ -1012,9 +1013,27 @@ void Foam::demCoupling::write(const bool fieldsWritten)
     {
         return;
     }
-    if (!returnReduce(fieldsWritten, andOp<bool>()))
+    // Files OpenFOAM could not write (atomicFileOperation: errors that
+    // show only when a file is flushed and closed)
+    using fileOperations::atomicFileOperation;
+    auto failedFile = []()
     {
-        restart_.abandonWrite("the fluid fields could not be written");
+        const DynamicList<fileName>& failed = atomicFileOperation::failures();
+        return failed.empty() ? string() : string(": " + failed.first());
+    };
+    if
+    (
+        !returnReduce
+        (
+            fieldsWritten && atomicFileOperation::failures().empty(),
+            andOp<bool>()
+        )
+    )
+    {
+        restart_.abandonWrite
+        (
+            "the fluid fields could not be written" + failedFile()
+        );
     }
 
     if (!atStart)
@@ -1065,12 +1084,19 @@ void Foam::demCoupling::write(const bool fieldsWritten)
         bool cloudWritten = true;
         const label nWritten =
             particleCloudWriter::write(mesh_, cloudName_, out, cloudWritten);
-        if (!returnReduce(cloudWritten, andOp<bool>()))
+        if
+        (
+            !returnReduce
+            (
+                cloudWritten && atomicFileOperation::failures().empty(),
+                andOp<bool>()
+            )
+        )
         {
             restart_.abandonWrite
             (
                 "the particles (lagrangian/" + word(cloudName_)
-              + ") could not be written"
+              + ") could not be written" + failedFile()
             );
         }
 
@@ -1120,6 +1146,7 @@ void Foam::demCoupling::write(const bool fieldsWritten)
                 restart_.abandonWrite(problem);
             }
         }
+        atomicFileOperation::clearFailures();
 
         if (demSeconds_ > 0)
         {
