@@ -84,12 +84,20 @@ int main(int argc, char *argv[])
         // Forces of the next interval from the (new) fluid
         coupling.updateForces();
 
-        const bool fieldsWritten = runTime.write();
+        // A field that cannot be written (a full disk) is handled by the
+        // coupling's write, which removes the incomplete time folder
+        string writeError;
+        const bool fieldsWritten =
+            fileOperations::atomicFileOperation::catching
+            (
+                [&runTime]() { return runTime.write(); },
+                writeError
+            );
 
         written = runTime.writeTime();
         if (written)
         {
-            coupling.write(fieldsWritten);
+            coupling.write(fieldsWritten, writeError);
             if (fluid.valid())
             {
                 Info<< "Timing (master, wall clock): fluid solve "
@@ -116,7 +124,14 @@ int main(int argc, char *argv[])
     // (e.g. a shortened run), so that the run can be looked at and resumed
     if (!written)
     {
-        coupling.write(runTime.writeNow());
+        string writeError;
+        const bool fieldsWritten =
+            fileOperations::atomicFileOperation::catching
+            (
+                [&runTime]() { return runTime.writeNow(); },
+                writeError
+            );
+        coupling.write(fieldsWritten, writeError);
     }
 
     Info<< "End\n" << endl;

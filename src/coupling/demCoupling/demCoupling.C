@@ -1003,7 +1003,11 @@ void Foam::demCoupling::evolve()
 }
 
 
-void Foam::demCoupling::write(const bool fieldsWritten)
+void Foam::demCoupling::write
+(
+    const bool fieldsWritten,
+    const string& fieldsError
+)
 {
     // The start time of a resumed run keeps the output it was resumed
     // from; a fresh start has no DEM state worth saving at its start
@@ -1033,6 +1037,7 @@ void Foam::demCoupling::write(const bool fieldsWritten)
         restart_.abandonWrite
         (
             "the fluid fields could not be written" + failedFile()
+          + (fieldsError.empty() ? string() : " (" + fieldsError + ")")
         );
     }
 
@@ -1082,8 +1087,11 @@ void Foam::demCoupling::write(const bool fieldsWritten)
 
         const label nPresent = returnReduce(label(n), sumOp<label>());
         bool cloudWritten = true;
-        const label nWritten =
-            particleCloudWriter::write(mesh_, cloudName_, out, cloudWritten);
+        string cloudError;
+        const label nWritten = particleCloudWriter::write
+        (
+            mesh_, cloudName_, out, cloudWritten, cloudError
+        );
         if
         (
             !returnReduce
@@ -1097,6 +1105,7 @@ void Foam::demCoupling::write(const bool fieldsWritten)
             (
                 "the particles (lagrangian/" + word(cloudName_)
               + ") could not be written" + failedFile()
+              + (cloudError.empty() ? string() : " (" + cloudError + ")")
             );
         }
 

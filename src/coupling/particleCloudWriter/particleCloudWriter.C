@@ -4,6 +4,7 @@
 #include "PstreamBuffers.H"
 #include "listPick.H"
 #include "DynamicList.H"
+#include "atomicFileOperation.H"
 
 namespace
 {
@@ -45,7 +46,8 @@ Foam::label Foam::particleCloudWriter::write
     const polyMesh& mesh,
     const word& cloudName,
     const particles& local,
-    bool& ok
+    bool& ok,
+    string& error
 )
 {
     const label nProcs = Pstream::nProcs();
@@ -133,18 +135,30 @@ Foam::label Foam::particleCloudWriter::write
     }
 
     passiveParticleCloud cloud(mesh, cloudName, list);
-    ok = cloud.write() || list.empty();
+    ok = fileOperations::atomicFileOperation::catching
+    (
+        [&cloud, &list]() { return cloud.write() || list.empty(); },
+        error
+    );
 
     labelList touchingParticle(nContacts.size());
     forAll(nContacts, k)
     {
         touchingParticle[k] = nContacts[k] > 0 ? 1 : 0;
     }
-    ok = writeField<vector>(cloud, "U", velocity) && ok;
-    ok = writeField<scalar>(cloud, "d", diameter) && ok;
-    ok = writeField<label>(cloud, "nContacts", nContacts) && ok;
-    ok = writeField<label>(cloud, "touchingParticle", touchingParticle) && ok;
-    ok = writeField<label>(cloud, "touchingWall", touchingWall) && ok;
+    ok = ok && fileOperations::atomicFileOperation::catching
+    (
+        [&]()
+        {
+            return
+                writeField<vector>(cloud, "U", velocity)
+             && writeField<scalar>(cloud, "d", diameter)
+             && writeField<label>(cloud, "nContacts", nContacts)
+             && writeField<label>(cloud, "touchingParticle", touchingParticle)
+             && writeField<label>(cloud, "touchingWall", touchingWall);
+        },
+        error
+    );
 
     return returnReduce(label(position.size()), sumOp<label>());
 }

@@ -5,7 +5,9 @@
 # and the file system's reason, leave no incomplete time folder (every
 # time folder left holds its complete DEM state), and, once space is
 # freed (the tmpfs grown to 64 MB), resume from the last complete write to
-# the end time.
+# the end time.  Then the disk is filled before a write (a ballast file):
+# the run must stop naming the file that did not fit and leave nothing of
+# that write time.
 #
 # Needs root (mount); without it, or where tmpfs cannot be mounted, exits
 # 77 (skipped) saying why.
@@ -83,6 +85,27 @@ grep -q "^Resuming from time $complete:" "$work/log.resumed" \
     || fail "not resumed from $complete: $(grep -m1 '^Resuming' "$work/log.resumed")"
 [ -f 1.2e-06/uniform/colloidCoupling ] || fail "the end time 1.2e-06 was not written"
 echo "resumed from $complete, end time 1.2e-06 written"
+
+# 4. A disk already full when the time is written (a ballast file takes
+#    the rest of the space): the first of the fluid fields or the
+#    particles' files that does not fit stops the run, named, and nothing
+#    of the time folder is left (OpenFOAM's files are written under
+#    temporary names)
+sed -i 's/^startFrom .*/startFrom       latestTime;/' system/controlDict
+echo "endTime 1.6e-6;" > system/runOverrides
+dd if=/dev/zero of=ballast bs=4k > /dev/null 2>&1 || true
+set +e
+colloidDEMFoam > "$work/log.ballast" 2>&1
+rc=$?
+set -e
+rm -f ballast
+message=$(grep -a -A3 "FOAM FATAL ERROR" "$work/log.ballast" | grep -a -m1 "Writing time" || true)
+echo "full before the write: exit status $rc: $message"
+[ $rc -ne 0 ] || fail "exit status 0 on a full disk"
+echo "$message" | grep -E -q "Writing time 1.4e-06 failed: the (fluid fields|particles \(lagrangian/particles\)) could not be written: .*/1.4e-06/.*No space left on device" \
+    || fail "no message naming the file of 1.4e-06 that could not be written and why"
+[ ! -e 1.4e-06 ] || fail "the time folder 1.4e-06 was left: $(ls 1.4e-06)"
+[ -z "$(find . -name '*.tmp')" ] || fail "temporary files left: $(find . -name '*.tmp')"
 
 [ $status -eq 0 ] && echo PASS
 exit $status
