@@ -27,7 +27,8 @@
 # reliability.overlaps.<serial|parallel>: four overlapping pairs of initial
 #   particles, across the three mid-planes (one is the processor boundary
 #   on 2 ranks) and a periodic face, all found and named before LIGGGHTS'
-#   set-up (runOverlapTest.sh).
+#   set-up (runOverlapTest.sh); reliability.overlaps.warning: a pair
+#   overlapping by 5 % only warns, naming it, and the run goes on.
 # reliability.outsideFluid: a particle outside the fluid mesh at the start
 #   is counted and named (id, position) in a warning; the run goes on.
 # coupling.badInput.<resumeIncomplete, misspeltKeyword, misspeltTopKeyword,
@@ -89,4 +90,10 @@ endforeach()
 add_test(NAME case.reliability.outsideFluid
     COMMAND ${reliabilityDir}/runOutsideFluidTest.sh ${reliabilityWork}/outsideFluid)
 set_tests_properties(case.reliability.outsideFluid PROPERTIES
+    TIMEOUT 60 LABELS "case;reliability")
+
+add_test(NAME case.reliability.overlaps.warning
+    COMMAND ${reliabilityDir}/runOverlapTest.sh 1
+            ${reliabilityWork}/overlaps_warning warn)
+set_tests_properties(case.reliability.overlaps.warning PROPERTIES
     TIMEOUT 60 LABELS "case;reliability")

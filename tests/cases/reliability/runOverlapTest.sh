@@ -8,10 +8,15 @@
 # colloidDEMFoam must stop before LIGGGHTS' set-up, counting 4 pairs and
 # naming them, serial and on 2 ranks.
 #
-#   runOverlapTest.sh nProcs workDir
+# With "warn": one pair overlapping by 5 % (centres 48.75 um apart), which
+# only warns: the run must go on to its end (exit 0), the warning naming
+# the pair.
+#
+#   runOverlapTest.sh nProcs workDir [warn]
 set -e
 nProcs=$1
 work=$2
+mode=${3:-stop}
 here=$(cd "$(dirname "$0")" && pwd)
 source "$here/testEnvironment.sh"
 
@@ -19,6 +24,24 @@ rm -rf "$work"
 mkdir -p "$(dirname "$work")"
 cp -r "$here/../twoWay/periodicBox" "$work"
 cd "$work"
+if [ "$mode" = warn ]
+then
+    printf '%s\n' "LIGGGHTS data file: 1 pair overlapping by 5 %" "" "3 atoms" \
+        "1 atom types" "" "0 1000 xlo xhi" "0 1000 ylo yhi" "0 1000 zlo zhi" \
+        "" "Atoms" "" "1 1 50 2.5 475.625 300 300" "2 1 50 2.5 524.375 300 300" \
+        "3 1 50 2.5 100 700 700" > constant/DEM/suspension.data
+    foamDictionary system/controlDict -entry endTime -set 4e-4 > /dev/null
+    blockMesh > log.blockMesh 2>&1
+    colloidDEMFoam > log.colloidDEMFoam 2>&1 \
+        || { echo "FAIL: the run stopped"; tail -20 log.colloidDEMFoam; exit 1; }
+    grep -a -A3 "pairs of the DEM" log.colloidDEMFoam | head -4
+    grep -a -E -q "^ *1 pairs of the DEM's initial particles .* overlap by more than 1 % " log.colloidDEMFoam \
+        && grep -a -q "particles 1 at .* and 2 at .*: overlap 5 % of the smaller radius" log.colloidDEMFoam \
+        && grep -q "^End" log.colloidDEMFoam \
+        || { echo "FAIL: no warning naming the pair (5 %), or the run did not end"; exit 1; }
+    echo PASS
+    exit 0
+fi
 {
     printf '%s\n' "LIGGGHTS data file: 4 overlapping pairs" "" "14 atoms" \
         "1 atom types" "" "0 1000 xlo xhi" "0 1000 ylo yhi" "0 1000 zlo zhi" \
