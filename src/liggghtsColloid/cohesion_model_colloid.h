@@ -17,10 +17,11 @@
 
    The forces are the kernels' of src/colloidModels (SI); this file only
    converts units (colloid_units.h) and applies the forces along the centre
-   line. Lubrication uses the kernels' pairwise implicit force with the DEM
-   step, with this pair's other normal forces (surface forces and contact)
-   inside the implicit update. Parameters (fix property/global, run units,
-   see README.md) are read at every run's init and checked by the kernels.
+   line. Lubrication is not applied here: its resistance c and the normal
+   are handed to the implicit update of all damping forces
+   (fix_colloid_implicit.h), which the pair style attaches at its init.
+   Parameters (fix property/global, run units, see README.md) are read at
+   every run's init and checked by the kernels.
 ------------------------------------------------------------------------- */
 
 #ifdef COHESION_MODEL
@@ -48,6 +49,7 @@ COHESION_MODEL(COHESION_COLLOID_VDW_DL_LUB,colloid/vdw/dl/lub,23)
 #include "comm.h"
 #include "contact_models.h"
 #include "cohesion_model_base.h"
+#include "fix_colloid_implicit.h"
 #include "fix_wall_gran.h"
 #include "modify.h"
 #include "neighbor.h"
@@ -78,6 +80,7 @@ public:
       name_(name),
       isWall_(cmb->is_wall()),
       wall_(isWall_ ? dynamic_cast<FixWallGran*>(hsetup) : NULL),
+      implicit_(NULL),
       groundedWall_(false),
       timeStepCheck_(true),
       vdwInnerCutoff_(0.0),
@@ -116,6 +119,7 @@ public:
             error->all(FLERR, msg);
         }
         neighbor->register_contact_dist_factor(1.0 + rangeSI_/U::length/rMin);
+        if (lubOn) attachImplicitUpdate();
         if (vdwOn) checkContactHoldsPull(read, rMin);
         if (isWall_) checkPrimitiveWallReach();
         else checkTimeStep();
@@ -129,7 +133,7 @@ public:
     // the normal model has already set the contact force sidata.Fn
     void surfacesIntersect(SurfacesIntersectData & sidata, ForceData & i_forces, ForceData & j_forces)
     {
-        apply(sidata, sidata.r, sidata.Fn*U::force, i_forces, j_forces);
+        apply(sidata, sidata.r, i_forces, j_forces);
         if (sidata.contact_flags) *sidata.contact_flags |= CONTACT_COHESION_MODEL;
     }
 
@@ -137,16 +141,15 @@ public:
     {
         const double r = std::sqrt(scdata.rsq);
         if ((r - scdata.radsum)*U::length >= rangeSI_) return;
-        apply(scdata, r, 0.0, i_forces, j_forces);
+        apply(scdata, r, i_forces, j_forces);
         scdata.has_force_update = true;
         // no history at a distance: the pair is not a contact partner
         if (scdata.contact_flags) *scdata.contact_flags &= ~CONTACT_COHESION_MODEL;
     }
 
 private:
-    // r: centre distance, or centre-wall distance [run units];
-    // contactForce: normal contact force of the pair [N], repulsive > 0
-    void apply(SurfacesCloseData & d, double r, double contactForce, ForceData & i_forces, ForceData & j_forces)
+    // r: centre distance, or centre-wall distance [run units]
+    void apply(SurfacesCloseData & d, double r, ForceData & i_forces, ForceData & j_forces)
     {
         const double h = (r - d.radsum)*U::length;
         const double Ri = d.radi*U::length;
@@ -158,17 +161,14 @@ private:
         if (vdwOn) F += vdw_[pairIndex(d.itype, d.jtype)].force(Ri, Rj, h);
         if (dlOn && !(d.is_wall && groundedWall_))
             F += dl_[pairIndex(d.itype, d.jtype)].force(Ri, Rj, h);
-        if (lubOn)
+        if (lubOn && implicit_->collecting())
         {
-            // vn = dh/dt, negative on approach
-            const double vn = ((d.v_i[0] - d.v_j[0])*en[0] + (d.v_i[1] - d.v_j[1])*en[1]
-                             + (d.v_i[2] - d.v_j[2])*en[2])*U::velocity;
-            const double *rmass = atom->rmass;
-            const double mi = rmass[d.i]*U::mass;
-            const double mStar = d.is_wall ? mi : colloid::reducedMass(mi, rmass[d.j]*U::mass);
-            // the pair's other normal forces (surface forces, contact) go
-            // into the implicit update so that their pull is damped too
-            F += lub_.front().implicitForce(Ri, Rj, h, vn, mStar, update->dt*U::time, F + contactForce);
+            const double c = lub_.front().resistance(Ri, Rj, h)/U::dampingCoeff;
+            if (c > 0.0)
+            {
+                if (d.is_wall) implicit_->addWall(d.i, c, en, d.v_j);
+                else implicit_->addPair(d.i, d.j, c, en);
+            }
         }
 
         const double Fn = F/U::force;
@@ -177,6 +177,26 @@ private:
             i_forces.delta_F[k] += Fn*en[k];
             if (!d.is_wall) j_forces.delta_F[k] -= Fn*en[k];
         }
+    }
+
+    // The pair style attaches the implicit update (before Modify's init);
+    // a wall finds it there
+    void attachImplicitUpdate()
+    {
+        if (!isWall_)
+        {
+            implicit_ = FixColloidImplicit::attach(lmp);
+            return;
+        }
+        implicit_ = FixColloidImplicit::find(lmp);
+        if (implicit_) return;
+        char msg[512];
+        std::snprintf(msg, sizeof(msg),
+            "%s on fix wall/gran '%s': wall lubrication is part of the implicit "
+            "update of all lubrication and drag, which the pair style sets up; "
+            "use a pair_style gran with a colloid/.../lub cohesion model too",
+            name_, wall_ ? wall_->id : "?");
+        error->all(FLERR, msg);
     }
 
     // A primitive wall lists the particles within half the neighbour skin
@@ -397,6 +417,7 @@ private:
     const char *name_;
     const bool isWall_;
     FixWallGran *const wall_;   // the wall fix of a wall model, else NULL
+    FixColloidImplicit *implicit_;  // the implicit damping update (lub on)
     bool groundedWall_;
     bool timeStepCheck_;
     double vdwInnerCutoff_;                    // [m]

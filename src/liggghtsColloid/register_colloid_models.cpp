@@ -4,6 +4,7 @@
 ------------------------------------------------------------------------- */
 
 #include "register_colloid_models.h"
+#include "fix_colloid_implicit.h"
 #include "register_variant.h"
 
 using namespace LIGGGHTS;
@@ -30,6 +31,11 @@ extern "C" void registerColloidModels()
     Colloid::registerHookeVariants();
     Colloid::registerHertzVariants();
     Colloid::registerWaltonBraunVariants();
+}
+
+extern "C" void colloidImplicitUpdate(void *lmp)
+{
+    LAMMPS_NS::FixColloidImplicit::attach(static_cast<LAMMPS_NS::LAMMPS *>(lmp));
 }
 
 namespace {

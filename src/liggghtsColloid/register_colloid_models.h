@@ -9,11 +9,19 @@
    library is loaded, and calling it again does nothing. A program that
    links the plugin should call it once anyway: the call makes the link
    dependency explicit, so the linker cannot drop the library.
+
+   colloidImplicitUpdate(lmp) sets up, in the LIGGGHTS instance lmp (a
+   LAMMPS_NS::LAMMPS*, as lammps_open gives it), the implicit update of
+   lubrication and drag (fix_colloid_implicit.h) that takes the drag from
+   the per-atom properties of colloid_drag_properties.h. A pair style with
+   a lubrication model sets it up itself; a CFD coupling calls this after
+   the input script and its own fixes, before the first run.
 ------------------------------------------------------------------------- */
 
 #ifndef COLLOID_REGISTER_COLLOID_MODELS_H
 #define COLLOID_REGISTER_COLLOID_MODELS_H
 
 extern "C" __attribute__((visibility("default"))) void registerColloidModels();
+extern "C" __attribute__((visibility("default"))) void colloidImplicitUpdate(void *lmp);
 
 #endif

@@ -1,5 +1,6 @@
 #include "demCoupling.H"
 #include "demUnits.H"
+#include "liggghtsColloid/colloid_drag_properties.h"
 #include "particleCloudWriter.H"
 #include "initialOverlaps.H"
 #include "atomicFileOperation.H"
@@ -114,16 +115,18 @@ void Foam::demCoupling::checkTimeStep() const
 
 void Foam::demCoupling::checkRelaxationTime(const scalar tau) const
 {
-    // LIGGGHTS applies the drag explicitly at each DEM step, which is
-    // stable and smooth only for steps below the relaxation time
+    // The DEM applies the drag implicitly (stable at any step), but the
+    // particle's inertia is resolved, and the drift accurate to about 1 %,
+    // only for steps up to the relaxation time
     if (props_.demTimeStep() > tau)
     {
         const dictionary& demDict = props_.subDict("DEM");
         FatalIOErrorInFunction(demDict)
             << "Keyword 'timeStep' in " << demDict.name() << " is "
             << props_.demTimeStep() << " s, longer than the particle"
-            << " relaxation time m/K = " << tau << " s: the drag would be"
-            << " unstable. Allowed range: timeStep <= " << tau
+            << " relaxation time m/K = " << tau << " s: the particle's"
+            << " inertia would not be resolved. Allowed range: timeStep <= "
+            << tau
             << exit(FatalIOError);
     }
 }
@@ -151,7 +154,7 @@ void Foam::demCoupling::startDEM()
 
     // Set before the script: the script may only refine them
     dem.command(std::string("units ") + demUnits::style);
-    dem.command("atom_modify map array");   // needed by fix couple/cfd
+    dem.command("atom_modify map array");   // atom ids to local indices
 
     // Case folder, for files named in the script (LIGGGHTS resolves
     // relative names from the working directory, which -case does not set)
@@ -221,18 +224,26 @@ void Foam::demCoupling::startDEM()
     // The DEM step of the settings wins over any in the script
     dem.command("timestep ${colloid_timestep}");
 
-    // Per-atom Ksl, uf (implicit drag) and dragforce (explicit force) are
-    // created by couple/cfd/force/implicit; the 'mpi' data coupling leaves
-    // all transfers to the caller, who writes the arrays in place.
-    dem.command("fix colloidCfd all couple/cfd couple_every 0 mpi");
-    dem.command("fix colloidCfdForce all couple/cfd/force/implicit");
+    // The drag handed to the DEM, per atom (colloid_drag_properties.h):
+    // coefficient and fluid velocity of the implicit part, explicit force,
+    // and the impulse the implicit update applied since the last exchange
+    // (fix id = property name)
+    dem.command
+    (
+        std::string("fix ") + colloidDrag::coefficient + " all property/atom "
+      + colloidDrag::coefficient + " scalar yes no no 0"
+    );
+    for
+    (
+        const char* name
+      : {colloidDrag::fluidVelocity, colloidDrag::explicitForce, colloidDrag::impulse}
+    )
+    {
+        dem.command(std::string("fix ") + name + " all property/atom " + name + " vector yes no no 0 0 0");
+    }
 
     // Fluid rank and cell of each particle: the start of the next search
     dem.command("fix colloidCell all property/atom colloidCell vector yes no no -1 -1");
-
-    // Unwrapped position at the start of the interval [um]: the drag
-    // impulse of the interval
-    dem.command("fix colloidX0 all property/atom colloidX0 vector yes no no 0 0 0");
 
     // 0 until the coupling has counted the particle as inserted
     dem.command("fix colloidSeen all property/atom colloidSeen scalar yes no no 0");
@@ -247,6 +258,7 @@ void Foam::demCoupling::startDEM()
     }
 
     restart_.addFixes(dem);
+    dem.implicitDamping();
 
     // A fresh start's particles, before LIGGGHTS' set-up meets them
     if (!restart_.resume())
@@ -487,9 +499,8 @@ void Foam::demCoupling::gatherRecords()
     double** v = dem.v();
     double* r = dem.radius();
     double* m = dem.rmass();
-    double* Ksl = dem.scalarProperty("Ksl");
-    double** uf = dem.vectorProperty("uf");
-    double** x0 = dem.vectorProperty("colloidX0");
+    double* Ksl = dem.scalarProperty(colloidDrag::coefficient);
+    double** impulse = dem.vectorProperty(colloidDrag::impulse);
 
     const scalar T = props_.couplingTimeStep()/demUnits::time;
 
@@ -502,16 +513,9 @@ void Foam::demCoupling::gatherRecords()
         velocity[i] = demUnits::velocity*vector(v[i][0], v[i][1], v[i][2]);
         K[i] = demUnits::dragCoeff*Ksl[i];
 
-        // Drag impulse of the interval / T: Ksl (uf - (x_end - x_start)/T)
-        // (zero for particles inserted during the interval: Ksl = 0)
-        double xu[3];
-        dem.unwrapped(i, xu);
-        vector f;
-        for (direction k = 0; k < 3; ++k)
-        {
-            f[k] = Ksl[i]*(uf[i][k] - (xu[k] - x0[i][k])/T);
-        }
-        F[i] = demUnits::force*f;
+        // Drag impulse of the interval / T, as the DEM applied it (zero
+        // for particles inserted during the interval: Ksl = 0)
+        F[i] = demUnits::force/T*vector(impulse[i][0], impulse[i][1], impulse[i][2]);
     }
 
     records_.gather(proc_, cell, position, radius, mass, velocity, K, F);
@@ -907,10 +911,10 @@ void Foam::demCoupling::updateForces()
         double** v = dem.v();
         double* r = dem.radius();
         double* m = dem.rmass();
-        double* Ksl = dem.scalarProperty("Ksl");
-        double** uf = dem.vectorProperty("uf");
-        double** fExplicit = dem.vectorProperty("dragforce");
-        double** x0 = dem.vectorProperty("colloidX0");
+        double* Ksl = dem.scalarProperty(colloidDrag::coefficient);
+        double** uf = dem.vectorProperty(colloidDrag::fluidVelocity);
+        double** fExplicit = dem.vectorProperty(colloidDrag::explicitForce);
+        double** impulse = dem.vectorProperty(colloidDrag::impulse);
 
         List<FixedList<scalar, 7>> perParticle(n, FixedList<scalar, 7>(0.0));
         records_.answer(answer, perParticle);
@@ -939,8 +943,8 @@ void Foam::demCoupling::updateForces()
             {
                 uf[i][k] = a[1 + k]/demUnits::velocity;
                 fExplicit[i][k] = a[4 + k]/demUnits::force;
+                impulse[i][k] = 0;
             }
-            dem.unwrapped(i, x0[i]);
         }
 
         reduce(tauMin, minOp<scalar>());

@@ -17,6 +17,7 @@
 #include <liggghts/domain.h>
 #include <liggghts/fix.h>
 #include <liggghts/compute.h>
+#include "liggghtsColloid/register_colloid_models.h"
 
 #include <cstdio>
 #include <cstdlib>
@@ -323,6 +324,14 @@ double Foam::liggghtsEngine::sumFixVector
 }
 
 
+void Foam::liggghtsEngine::implicitDamping()
+{
+    liggghtsCall call;
+    registerColloidModels();
+    colloidImplicitUpdate(lmp_);
+}
+
+
 bool Foam::liggghtsEngine::hasPairStyle() const
 {
     return engine(lmp_)->force->pair != nullptr;
@@ -420,13 +429,6 @@ double* Foam::liggghtsEngine::radius() const
 double* Foam::liggghtsEngine::rmass() const
 {
     return engine(lmp_)->atom->rmass;
-}
-
-
-void Foam::liggghtsEngine::unwrapped(const int i, double xu[3]) const
-{
-    LAMMPS_NS::Atom* atom = engine(lmp_)->atom;
-    engine(lmp_)->domain->unmap(atom->x[i], atom->image[i], xu);
 }
 
 

@@ -1,0 +1,131 @@
+/* ----------------------------------------------------------------------
+   colloidFoam LIGGGHTS plugin: the implicit velocity update of every
+   linear damping force of a step - normal lubrication between particles
+   and against walls, and the fluid drag K (u_f - v) of the coupling -
+   solved together, for all particles at once, by backward Euler.
+
+   Why one solve: a pairwise implicit lubrication force (each pair damped
+   with its own reduced mass) adds up the kicks of z neighbours and gains
+   energy in clusters once c dt/m* passes about 2/z; an explicit drag
+   outside the implicit update biases the overdamped drift by a term of
+   order dt/tau_Stokes. Backward Euler on the whole damping matrix R has
+   neither problem:
+       (M + dt R) v' = M v + dt (f + K u_f),
+   f: every other force of the step (contact, surface forces, gravity,
+   the coupling's explicit drag part), all evaluated before this fix;
+   R = sum over lubricated pairs c n n^T (e_i - e_j)(e_i - e_j)^T
+     + sum over lubricated wall contacts c n n^T (wall velocity on the right)
+     + K (drag). R is symmetric positive semi-definite, so
+     - the kinetic energy cannot grow from damping, for any dt and any
+       number of neighbours (v'^T M v' <= v'^T M v);
+     - a state in force balance (R v = f + K u_f) is kept exactly: the
+       quasi-static (overdamped) drift is exact at any step;
+     - every pair's damping impulse is equal and opposite (momentum kept).
+   The system is solved by conjugate gradients preconditioned with each
+   particle's own 3x3 block (M + dt R)_ii, to a relative residual of
+   1e-10 in the preconditioned norm; an isolated pair takes two or three
+   iterations. Ghost atoms' search directions come by forward
+   communication, so the solve is the same serial and parallel (newton off:
+   a pair across a processor boundary is on both ranks' lists).
+
+   The fix sets each particle's force to M (v' - v)/dt in
+   pre_final_integrate, after every post_force fix: the velocity-Verlet
+   half kicks of nve/sphere (end of this step, start of the next) then give
+   v' at the next position update. LIGGGHTS' fix factory cannot be
+   extended from a plugin (Modify::fix_map is private), so the fix is
+   created by code, not by a "fix" command: attach() appends it to
+   Modify's public fix list the way Modify::add_fix does, and keeps it
+   last so that its setup() also sees every wall's forces.
+
+   Statistics of the run (since its init) as the fix's global vector,
+   e.g. "thermo_style custom step f_colloid_implicit[2]": [1] updates,
+   [2] mean and [3] largest number of iterations, [4] updates that did not
+   converge in 200 iterations (they warn once).
+
+   Who attaches it: every pair style with a colloid cohesion model (at its
+   init, before Modify's), and the CFD coupling (colloidImplicitUpdate()).
+   Lubrication models record (i, j, c, n) during the force computation
+   instead of applying a force; the coupling's drag comes from per-atom
+   properties (colloid_drag_properties.h).
+------------------------------------------------------------------------- */
+
+#ifndef COLLOID_FIX_COLLOID_IMPLICIT_H
+#define COLLOID_FIX_COLLOID_IMPLICIT_H
+
+#include <vector>
+#include "fix.h"
+
+namespace LAMMPS_NS {
+
+class FixColloidImplicit : public Fix
+{
+public:
+    //- The fix of this LIGGGHTS instance, created if absent, and moved to
+    //  the end of the fix list. Call before Modify::init (e.g. from a pair
+    //  style's init, or between runs).
+    static FixColloidImplicit *attach(LAMMPS *lmp);
+
+    //- The fix of this instance, or NULL
+    static FixColloidImplicit *find(LAMMPS *lmp);
+
+    FixColloidImplicit(LAMMPS *lmp, int narg, char **arg);
+
+    int setmask();
+    void init();
+    void setup_pre_force(int);
+    void pre_force(int);
+    void setup(int);
+    void pre_final_integrate();
+    double compute_vector(int n);
+    int pack_comm(int n, int *list, double *buf, int pbc_flag, int *pbc);
+    void unpack_comm(int n, int first, double *buf);
+    double memory_usage();
+
+    //- Whether the models of this step should record their damping here
+    //  (false outside the force computation, e.g. for a compute that
+    //  re-evaluates the contacts at output)
+    bool collecting() const { return collecting_; }
+
+    //- A lubricated pair: local atom i, atom j (local or ghost),
+    //  resistance c [run units: mass/time], unit normal n from j to i
+    void addPair(int i, int j, double c, const double *n);
+
+    //- A lubricated wall contact of local atom i: resistance c, unit
+    //  normal n from the wall to i, wall velocity vWall [run units]
+    void addWall(int i, double c, const double *n, const double *vWall);
+
+private:
+    struct PairTerm { int i, j; double c; double n[3]; };
+    struct WallTerm { int i; double c; double n[3]; double vWall[3]; };
+
+    // the solve with step h [run units]; the force set makes the next
+    // kick of h give the backward-Euler velocity
+    void solve(double h, bool accumulateImpulse);
+    void findDragProperties();
+    void multiply(double h, const double *p, double *q) const;
+    double dot(const double *a, const double *b, int n) const;
+
+    std::vector<PairTerm> pairs_;
+    std::vector<WallTerm> walls_;
+    bool collecting_;
+
+    // the coupling's per-atom drag properties (NULL without them); their
+    // arrays move when atoms are added, so they are read at each solve
+    Fix *Ksl_;
+    Fix *uf_;
+    Fix *dragforce_;
+    Fix *impulse_;
+
+    // work arrays, 3 per atom (p includes ghosts)
+    std::vector<double> x_, r_, z_, p_, q_, block_;
+
+    // statistics of the run
+    long nSolves_;
+    long nIterations_;
+    int maxIterations_;
+    long nNotConverged_;
+};
+
+}
+
+#endif
