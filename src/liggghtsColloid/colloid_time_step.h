@@ -59,11 +59,12 @@ public:
     {
         if (seconds < 0.0) return;
         const double dt = lmp_->update->dt*MicroUnits::time;
-        char msg[512];
+        char msg[512], allowed[128] = " (integrated implicitly, not enforced)";
+        if (fraction > 0.0)
+            std::snprintf(allowed, sizeof(allowed), " (largest allowed dt: %g s)", fraction*seconds);
         std::snprintf(msg, sizeof(msg),
             "%s: time-step limit, %s: %g s; dt = %g s is %.3g of it%s",
-            model_, what, seconds, dt, dt/seconds,
-            fraction > 0.0 ? "" : " (integrated implicitly, not enforced)");
+            model_, what, seconds, dt, dt/seconds, allowed);
         print(msg);
         if (!(fraction > 0.0) || dt <= fraction*seconds) return;
         // Inside colloidDEMFoam (which defines colloid_timestep) the step

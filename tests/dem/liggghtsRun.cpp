@@ -10,9 +10,12 @@
 #include "lammps.h"
 #include "library.h"
 #include "update.h"
+#include "variable.h"
 
 #include <gtest/gtest.h>
 
+#include <cstdio>
+#include <cstdlib>
 #include <fstream>
 #include <sstream>
 #include <stdexcept>
@@ -30,9 +33,9 @@ LiggghtsRun::LiggghtsRun()
     // log, with any error message, to <test name>.log
     const ::testing::TestInfo* test =
         ::testing::UnitTest::GetInstance()->current_test_info();
-    const std::string log = std::string(test ? test->name() : "liggghts") + ".log";
+    log_ = std::string(test ? test->name() : "liggghts") + ".log";
     const char* args[] =
-        {"liggghts", "-log", log.c_str(), "-echo", "log", "-screen", "/dev/null"};
+        {"liggghts", "-log", log_.c_str(), "-echo", "log", "-screen", "/dev/null"};
     void* handle = nullptr;
     lammps_open_no_mpi(7, const_cast<char**>(args), &handle);
     lmp_ = static_cast<LAMMPS_NS::LAMMPS*>(handle);
@@ -69,6 +72,31 @@ const double* LiggghtsRun::f(int id) const { return lmp_->atom->f[local(id)]; }
 const double* LiggghtsRun::omega(int id) const { return lmp_->atom->omega[local(id)]; }
 double LiggghtsRun::mass(int id) const { return lmp_->atom->rmass[local(id)]; }
 double LiggghtsRun::dt() const { return lmp_->update->dt; }
+long LiggghtsRun::nAtoms() const { return static_cast<long>(lmp_->atom->natoms); }
+
+double LiggghtsRun::evaluate(const std::string& expression)
+{
+    commands("variable liggghtsRunValue equal " + expression);
+    LAMMPS_NS::Variable* variable = lmp_->input->variable;
+    return variable->compute_equal(variable->find(const_cast<char*>("liggghtsRunValue")));
+}
+
+double LiggghtsRun::largestAllowedTimeStep() const
+{
+    if (lmp_->logfile) std::fflush(lmp_->logfile);
+    std::ifstream in(log_);
+    const std::string key = "(largest allowed dt: ";
+    double smallest = -1;
+    std::string line;
+    while (std::getline(in, line))
+    {
+        const std::size_t at = line.find(key);
+        if (at == std::string::npos) continue;
+        const double dt = std::atof(line.c_str() + at + key.size());
+        if (smallest < 0 || dt < smallest) smallest = dt;
+    }
+    return smallest;
+}
 
 std::string LiggghtsRun::header(double halfBox, const std::string& boundary)
 {

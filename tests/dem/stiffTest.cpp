@@ -1,0 +1,444 @@
+/*---------------------------------------------------------------------------*\
+    colloidFoam DEM tests (label stiff): many-body stiff cases of the
+    implicit update of lubrication and drag (fix_colloid_implicit.h), run
+    in LIGGGHTS in process. Particles of the slot-coater tutorial (d =
+    0.3 um, 2500 kg/m^3) in water, lubrication cut-offs 1 nm and 0.1 um,
+    Walton-Braun contact K1 = 1 N/m, e = 0.5; "strong" van der Waals:
+    A = 1e-19 J.
+
+    Each many-body case starts with every gap at the lubrication inner
+    cut-off (1 nm), where c dt/m* is largest, and random velocities, and
+    runs at the largest step the plugin's start-up checks accept (read
+    from their log lines) and at ten times it with "timeStepCheck off":
+      - lubrication only (no energy source): the kinetic energy of the
+        half-step velocities (those of the implicit update) never grows,
+        step by step (backward Euler on a positive semi-definite damping
+        matrix contracts them in the mass norm); no gap closes;
+      - van der Waals + lubrication + contact: finite, no particle passes
+        another or a wall (overlap below R/4, the plugin's own bound for the
+        pull at contact), and the kinetic energy stays below the van der
+        Waals energy that the bonds can release (6 N A R/(6 h0), every
+        particle with twelve neighbours at the inner cut-off h0, walls
+        counted at their sphere-plane value).
+    Cases: 13-particle FCC cluster; 108-particle FCC block on a primitive
+    wall; a jittered dense FCC packing compressed between a primitive
+    floor and a descending mesh wall (lubrication with the moving wall);
+    one particle pinned between two primitive walls 1 nm from each.
+
+    approachAtStokesTime: two spheres (R = 0.5 um) released at rest 50 nm
+    apart close to 5 nm under van der Waals (A = 1e-20 J), lubrication and
+    the coupling's Stokes drag K = 6 pi mu R (per-atom Ksl, uf = 0, as
+    colloidDEMFoam hands it). Reference: the overdamped closed form,
+        T = int_5nm^50nm (K + 2 c(h))/(2 F(h)) dh,
+    F(h) = A Rs/6 (1/h^2 - 1/hc^2), c(h) = 6 pi mu Rs^2 (1/h - 1/h_out),
+    Rs = R/2, by Simpson's rule (checked against half the intervals;
+    inertia changes T by about tau_S/T = 4e-5). At dt = tau_S = m/K the DEM
+    must arrive within 1 % of T; at dt = 10 tau_S the gap must fall
+    monotonically to 5 nm (stability). The van der Waals spring check,
+    which guards the inner cut-off (0.4 nm, not reached), is off.
+\*---------------------------------------------------------------------------*/
+#include "liggghtsRun.H"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <iostream>
+#include <random>
+#include <sstream>
+#include <string>
+#include <vector>
+
+using namespace demTest;
+
+namespace
+{
+
+const double pi = std::acos(-1.0);
+
+// run units: um, us, pg
+const double R = 0.15;          // um
+const double rho = 2.5;         // pg/um^3
+const double mu = 1.0;          // mPa s
+const double hIn = 0.001;       // um, lubrication inner cut-off
+const double hOut = 0.1;        // um, lubrication and van der Waals outer cut-off
+const double K1 = 1000;         // nN/um = 1 N/m
+const double hamaker = 1e-19;   // J
+const double h0 = 4e-4;         // um, van der Waals inner cut-off (default)
+const double v0 = 0.01;         // um/us, largest initial velocity component
+
+typedef std::array<double, 3> Point;
+
+struct Scene
+{
+    std::vector<Point> centres;     // [um]
+    bool vanDerWaals = false;       // else lubrication only
+    bool floor = false;             // primitive wall z = 0 under the particles
+    double ceiling = NAN;           // primitive wall z = ceiling above them
+    double meshCeiling = NAN;       // mesh wall starting at this z ...
+    double meshSpeed = 0;           // ... moving down at this speed [um/us]
+};
+
+// 13: a particle and its twelve FCC neighbours, all gaps hIn
+std::vector<Point> cluster13()
+{
+    const double a = (2*R + hIn)/std::sqrt(2.0);
+    std::vector<Point> p{{0, 0, 0}};
+    for (int s1 : {-1, 1})
+        for (int s2 : {-1, 1})
+        {
+            p.push_back({s1*a, s2*a, 0});
+            p.push_back({s1*a, 0, s2*a});
+            p.push_back({0, s1*a, s2*a});
+        }
+    return p;
+}
+
+// 3 x 3 x 3 FCC cells (108 particles), nearest gaps hIn, each centre moved
+// by up to `jitter` [um] (random direction), lowest centres R + hIn above z = 0
+std::vector<Point> fccBlock(double gap, double jitter, unsigned seed)
+{
+    const double L = std::sqrt(2.0)*(2*R + gap);
+    const double basis[4][3] = {{0, 0, 0}, {0.5, 0.5, 0}, {0.5, 0, 0.5}, {0, 0.5, 0.5}};
+    std::mt19937 random(seed);
+    std::uniform_real_distribution<double> u(-1, 1);
+    std::vector<Point> p;
+    for (int i = 0; i < 3; i++)
+        for (int j = 0; j < 3; j++)
+            for (int k = 0; k < 3; k++)
+                for (const auto& b : basis)
+                {
+                    double d[3];
+                    do { d[0] = u(random); d[1] = u(random); d[2] = u(random); }
+                    while (d[0]*d[0] + d[1]*d[1] + d[2]*d[2] > 1);
+                    p.push_back({(i + b[0] - 1.25)*L + jitter*d[0],
+                                 (j + b[1] - 1.25)*L + jitter*d[1],
+                                 (k + b[2])*L + jitter*d[2]});
+                }
+    const double zMin = std::min_element(p.begin(), p.end(),
+        [](const Point& a, const Point& b) { return a[2] < b[2]; })->at(2);
+    for (Point& c : p) c[2] += R + hIn - zMin;
+    return p;
+}
+
+std::string input(const Scene& s, double dt, bool check)
+{
+    const std::string off = check ? "" : " timeStepCheck off";
+    const std::string cohesion = s.vanDerWaals ? "colloid/vdw/lub" : "colloid/lub";
+    std::ostringstream in;
+    in.precision(17);
+    in << LiggghtsRun::header(2.5)
+       << "fix m1 all property/global loadingStiffness peratomtypepair 2 "
+       << K1 << ' ' << K1 << ' ' << K1 << ' ' << K1 << "\n"
+          "fix m2 all property/global coefficientRestitution peratomtypepair 2 0.5 0.5 0.5 0.5\n"
+          "fix m3 all property/global coefficientFriction peratomtypepair 2 0.3 0.3 0.3 0.3\n"
+          "fix l1 all property/global liquidViscosity scalar " << mu << "\n"
+          "fix l2 all property/global lubricationInnerCutoff scalar " << hIn << "\n"
+          "fix l3 all property/global lubricationOuterCutoff scalar " << hOut << "\n";
+    if (s.vanDerWaals)
+    {
+        const double A = hamaker/fJ;
+        in << "fix c1 all property/global hamakerConstant peratomtypepair 2 "
+           << A << ' ' << A << ' ' << A << ' ' << A << "\n"
+              "fix c2 all property/global vdwOuterCutoff scalar " << hOut << "\n";
+    }
+    in << "neighbor 0.2 bin\n"
+          "neigh_modify delay 0\n"
+          "pair_style gran model walton_braun tangential history cohesion " << cohesion << off << "\n"
+          "pair_coeff * *\n"
+          "timestep " << dt << "\n"
+          "fix integrate all nve/sphere\n";
+    const std::string wall = "all wall/gran model walton_braun tangential history cohesion " + cohesion;
+    if (s.floor) in << "fix floor " << wall << " primitive type 2 zplane 0" << off << "\n";
+    if (!std::isnan(s.ceiling)) in << "fix ceiling " << wall << " primitive type 2 zplane " << s.ceiling << off << "\n";
+    if (!std::isnan(s.meshCeiling))
+    {
+        writeSquareStl("stiffCeiling.stl", 2.4, s.meshCeiling);
+        in << "fix ceilingMesh all mesh/surface file stiffCeiling.stl type 2\n"
+              "fix ceilingMove all move/mesh mesh ceilingMesh linear 0 0 " << -s.meshSpeed << "\n"
+              "fix ceiling " << wall << " mesh n_meshes 1 meshes ceilingMesh" << off << "\n";
+    }
+    for (const Point& c : s.centres)
+        in << "create_atoms 1 single " << c[0] << ' ' << c[1] << ' ' << c[2] << " units box\n";
+    in << "set atom * diameter " << 2*R << " density " << rho << "\n";
+    std::mt19937 random(12345);
+    std::uniform_real_distribution<double> u(-v0, v0);
+    for (std::size_t i = 1; i <= s.centres.size(); i++)
+        in << "set atom " << i << " vx " << u(random) << " vy " << u(random) << " vz " << u(random) << "\n";
+    in << "run 0\n";
+    return in.str();
+}
+
+// the largest step [us] the start-up checks accept for this scene
+double largestAcceptedStep(const Scene& s)
+{
+    LiggghtsRun probe;
+    probe.commands(input(s, 1e-7, true));
+    const double dt = probe.largestAllowedTimeStep();
+    if (!(dt > 0)) throw std::runtime_error("no time-step limit was printed");
+    // printed to 6 digits, perhaps rounded up
+    return 0.9999*dt/us;
+}
+
+struct State
+{
+    double kinetic = 0;         // of the half-step velocities [fJ]
+    double overlap = -HUGE_VAL; // largest particle-particle or wall overlap [um]
+    double gap = HUGE_VAL;      // smallest surface gap [um]
+    bool finite = true;
+};
+
+State measure(const LiggghtsRun& run, const Scene& s, double t)
+{
+    State st;
+    const int n = static_cast<int>(s.centres.size());
+    std::vector<Point> x(n);
+    for (int i = 0; i < n; i++)
+    {
+        const double *xi = run.x(i + 1), *vi = run.v(i + 1), *fi = run.f(i + 1);
+        const double m = run.mass(i + 1);
+        for (int k = 0; k < 3; k++)
+        {
+            x[i][k] = xi[k];
+            // velocity of the next position update (the update's v')
+            const double vh = vi[k] + 0.5*run.dt()*fi[k]/m;
+            st.kinetic += 0.5*m*vh*vh;
+            st.finite = st.finite && std::isfinite(xi[k]) && std::isfinite(vh);
+        }
+    }
+    auto surface = [&](double gap)
+    {
+        st.gap = std::min(st.gap, gap);
+        st.overlap = std::max(st.overlap, -gap);
+    };
+    for (int i = 0; i < n; i++)
+    {
+        for (int j = i + 1; j < n; j++)
+        {
+            const double dx = x[i][0] - x[j][0], dy = x[i][1] - x[j][1], dz = x[i][2] - x[j][2];
+            surface(std::sqrt(dx*dx + dy*dy + dz*dz) - 2*R);
+        }
+        if (s.floor) surface(x[i][2] - R);
+        if (!std::isnan(s.ceiling)) surface(s.ceiling - x[i][2] - R);
+        if (!std::isnan(s.meshCeiling)) surface(s.meshCeiling - s.meshSpeed*t - x[i][2] - R);
+    }
+    return st;
+}
+
+// runs the scene at the largest accepted step and at 10 times it
+void stiffCase(const Scene& s, int nSteps)
+{
+    const double accepted = largestAcceptedStep(s);
+    const double m = rho*4.0/3.0*pi*R*R*R;
+    const double c = 6*pi*mu*(R/2)*(R/2)*(1/hIn - 1/hOut);
+    const int n = static_cast<int>(s.centres.size());
+    // energy the van der Waals bonds can release [fJ]
+    const double wellEnergy = 6*n*hamaker*(R*um)/(6*h0*um)/fJ;
+
+    for (double factor : {1.0, 10.0})
+    {
+        const double dt = factor*accepted;
+        LiggghtsRun run;
+        run.commands(input(s, dt, factor == 1.0));
+        State start = measure(run, s, 0), last = start;
+        double maxKinetic = start.kinetic, maxOverlap = start.overlap;
+        bool kineticGrew = false;
+        double grewBy = 0;
+        int step = 0;
+        for (; step < nSteps; step++)
+        {
+            run.commands("run 1 pre no post no\n");
+            const State now = measure(run, s, (step + 1)*dt);
+            ASSERT_TRUE(now.finite) << "dt " << dt << " us: not finite at step " << step + 1;
+            if (now.kinetic > last.kinetic*(1 + 1e-9) + 1e-12*start.kinetic)
+            {
+                kineticGrew = true;
+                grewBy = std::max(grewBy, now.kinetic/last.kinetic);
+            }
+            maxKinetic = std::max(maxKinetic, now.kinetic);
+            maxOverlap = std::max(maxOverlap, now.overlap);
+            last = now;
+            if (!s.vanDerWaals)
+            {
+                ASSERT_GT(now.gap, 0) << "dt " << dt << " us: a gap closed at step " << step + 1
+                    << " (the lubrication-only cases must stay out of contact)";
+            }
+        }
+        std::cout << (s.vanDerWaals ? "van der Waals + lubrication" : "lubrication only")
+                  << ", " << n << " particles, dt = " << dt << " us (" << factor
+                  << " x the largest accepted), c dt/m* at the inner cut-off " << c*dt/(m/2)
+                  << ": kinetic energy " << start.kinetic << " -> " << last.kinetic
+                  << " fJ (largest " << maxKinetic << "), largest overlap " << maxOverlap
+                  << " um, conjugate-gradient iterations per step "
+                  << run.evaluate("f_colloid_implicit[2]") << " (largest "
+                  << run.evaluate("f_colloid_implicit[3]") << ")" << std::endl;
+        EXPECT_EQ(run.evaluate("f_colloid_implicit[4]"), 0) << "updates that did not converge";
+        EXPECT_LT(maxOverlap, 0.25*R) << "dt " << dt << " us: a particle passes another or a wall";
+        if (s.vanDerWaals)
+        {
+            EXPECT_LT(maxKinetic, start.kinetic + wellEnergy)
+                << "dt " << dt << " us: more kinetic energy than the van der Waals bonds can release";
+        }
+        else
+        {
+            EXPECT_FALSE(kineticGrew) << "dt " << dt << " us: the kinetic energy grew, by a factor "
+                                      << grewBy << " in one step, without an energy source";
+            EXPECT_LT(last.kinetic, start.kinetic) << "dt " << dt << " us: nothing was damped";
+        }
+    }
+}
+
+} // namespace
+
+
+TEST(stiff, lubricatedCluster13)
+{
+    Scene s;
+    s.centres = cluster13();
+    stiffCase(s, 200);
+}
+
+TEST(stiff, lubricatedBlock108OnWall)
+{
+    Scene s;
+    s.centres = fccBlock(hIn, 0, 1);
+    s.floor = true;
+    stiffCase(s, 200);
+}
+
+TEST(stiff, vdwCluster13)
+{
+    Scene s;
+    s.centres = cluster13();
+    s.vanDerWaals = true;
+    stiffCase(s, 300);
+}
+
+TEST(stiff, vdwBlock108OnWall)
+{
+    Scene s;
+    s.centres = fccBlock(hIn, 0, 1);
+    s.vanDerWaals = true;
+    s.floor = true;
+    stiffCase(s, 300);
+}
+
+TEST(stiff, compressedRandomPacking)
+{
+    Scene s;
+    // nearest gaps 6 nm less up to 2 x 2.5 nm of jitter: 1 to 11 nm
+    s.centres = fccBlock(0.006, 0.0025, 7);
+    s.vanDerWaals = true;
+    s.floor = true;
+    double zMax = 0;
+    for (const Point& c : s.centres) zMax = std::max(zMax, c[2]);
+    s.meshCeiling = zMax + R + hIn;
+    s.meshSpeed = 0.05;     // um/us = m/s
+    stiffCase(s, 300);
+}
+
+TEST(stiff, pinnedBetweenWalls)
+{
+    for (bool vdw : {false, true})
+    {
+        Scene s;
+        s.centres = {{0, 0, R + hIn}};
+        s.floor = true;
+        s.ceiling = 2*R + 2*hIn;
+        s.vanDerWaals = vdw;
+        stiffCase(s, 200);
+    }
+}
+
+
+namespace
+{
+
+// overdamped approach time [s] of two spheres from gap a to gap b [m]
+double overdampedApproach(double A, double Rs, double hc, double muSI, double hOutSI,
+                          double K, double a, double b, int intervals)
+{
+    auto integrand = [&](double h)
+    {
+        const double F = A*Rs/6*(1/(h*h) - 1/(hc*hc));
+        const double c = 6*pi*muSI*Rs*Rs*(1/h - 1/hOutSI);
+        return (K + 2*c)/(2*F);
+    };
+    const double dh = (b - a)/intervals;
+    double sum = integrand(a) + integrand(b);
+    for (int i = 1; i < intervals; i++) sum += (i % 2 ? 4 : 2)*integrand(a + i*dh);
+    return sum*dh/3;
+}
+
+} // namespace
+
+
+TEST(stiff, approachAtStokesTime)
+{
+    const double Rp = 0.5;              // um
+    const double A = 1e-20;             // J
+    const double hStart = 0.05, hEnd = 0.005;   // um
+    const double K = 6*pi*mu*Rp;        // pg/us = 1e-9 kg/s
+    const double m = rho*4.0/3.0*pi*Rp*Rp*Rp;
+    const double tau = m/K;             // us
+
+    const double T = overdampedApproach(A, Rp/2*um, hOut*um, mu*1e-3, hOut*um,
+                                        K*1e-9, hEnd*um, hStart*um, 200000)/us;
+    ASSERT_NEAR(overdampedApproach(A, Rp/2*um, hOut*um, mu*1e-3, hOut*um,
+                                   K*1e-9, hEnd*um, hStart*um, 100000)/us, T, 1e-8*T);
+
+    for (double factor : {1.0, 10.0})
+    {
+        const double dt = factor*tau;
+        LiggghtsRun run;
+        std::ostringstream in;
+        in.precision(17);
+        in << LiggghtsRun::header(2)
+           << "fix m1 all property/global loadingStiffness peratomtypepair 2 100 100 100 100\n"
+              "fix m2 all property/global coefficientRestitution peratomtypepair 2 0.5 0.5 0.5 0.5\n"
+              "fix m3 all property/global coefficientFriction peratomtypepair 2 0.3 0.3 0.3 0.3\n"
+              "fix c1 all property/global hamakerConstant peratomtypepair 2 "
+           << A/fJ << ' ' << A/fJ << ' ' << A/fJ << ' ' << A/fJ << "\n"
+              "fix c2 all property/global vdwOuterCutoff scalar " << hOut << "\n"
+              "fix l1 all property/global liquidViscosity scalar " << mu << "\n"
+              "fix l2 all property/global lubricationInnerCutoff scalar " << hIn << "\n"
+              "fix l3 all property/global lubricationOuterCutoff scalar " << hOut << "\n"
+              "neighbor 0.1 bin\n"
+              "neigh_modify delay 0\n"
+              "pair_style gran model walton_braun tangential history cohesion colloid/vdw/lub timeStepCheck off\n"
+              "pair_coeff * *\n"
+              "timestep " << dt << "\n"
+              "fix integrate all nve/sphere\n"
+              "fix Ksl all property/atom Ksl scalar yes no no " << K << "\n"
+              "fix uf all property/atom uf vector yes no no 0 0 0\n"
+              "create_atoms 1 single 0 0 0 units box\n"
+              "create_atoms 1 single " << 2*Rp + hStart << " 0 0 units box\n"
+              "set atom * diameter " << 2*Rp << " density " << rho << "\n"
+              "velocity all set 0 0 0 units box\n"
+              "run 0\n";
+        run.commands(in.str());
+
+        auto gap = [&]() { return run.x(2)[0] - run.x(1)[0] - 2*Rp; };
+        double t = 0, tHit = -1, gOld = gap();
+        bool monotone = true;
+        while (tHit < 0 && t < 2*T)
+        {
+            // chunks while far from the end gap, single steps near it
+            const int n = gOld > 2*hEnd ? std::max(1, int(0.01*T/dt)) : 1;
+            run.commands("run " + std::to_string(n) + " pre no post no\n");
+            t += n*dt;
+            const double g = gap();
+            ASSERT_TRUE(std::isfinite(g));
+            monotone = monotone && g < gOld;
+            if (g <= hEnd) tHit = t - n*dt*(hEnd - g)/(gOld - g);
+            gOld = g;
+        }
+        std::cout << "dt = " << factor << " tau_S (" << dt << " us): time to a 5 nm gap "
+                  << tHit << " us, overdamped closed form " << T << " us, relative error "
+                  << (tHit - T)/T << std::endl;
+        ASSERT_GT(tHit, 0) << "dt " << dt << " us: the gap did not reach " << hEnd << " um";
+        EXPECT_TRUE(monotone) << "dt " << dt << " us: the gap did not fall monotonically";
+        if (factor == 1.0) EXPECT_NEAR(tHit, T, 0.01*T) << "dt = tau_S";
+    }
+}
