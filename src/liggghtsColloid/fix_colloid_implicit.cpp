@@ -32,6 +32,14 @@ const char fixStyle[] = "colloid/implicit";
 const double tolerance = 1e-10;
 const int maxIterations = 200;
 
+// Weight of the end-of-step velocity in the drag K (u_f - v): 1/2, the
+// trapezoidal rule, second order for the particle's relaxation (backward
+// Euler lags it: 1 % at t = tau_S with dt = tau_S/27) and A-stable; the
+// coupling keeps K dt/m <= 1, where it does not oscillate. Lubrication is
+// stiff (c dt/m* >> 1) and needs backward Euler (weight 1), which damps
+// the stiff relative motion in one step instead of reversing it.
+const double dragWeight = 0.5;
+
 // symmetric 3x3 block stored as xx yy zz xy xz yz
 void addOuter(double *b, double w, const double *n)
 {
@@ -86,36 +94,29 @@ FixColloidImplicit *FixColloidImplicit::attach(LAMMPS *lmp)
 {
     Modify *modify = lmp->modify;
     FixColloidImplicit *fix = find(lmp);
-    if (!fix)
-    {
-        char id[sizeof(fixId)], group[] = "all", style[sizeof(fixStyle)];
-        std::strcpy(id, fixId);
-        std::strcpy(style, fixStyle);
-        char *arg[3] = {id, group, style};
-        fix = new FixColloidImplicit(lmp, 3, arg);
-        // as Modify::add_fix grows its lists
-        if (modify->nfix == modify->maxfix)
-        {
-            modify->maxfix += 16;
-            modify->fix = (Fix **) lmp->memory->srealloc(modify->fix,
-                modify->maxfix*sizeof(Fix *), "modify:fix");
-            lmp->memory->grow(modify->fmask, modify->maxfix, "modify:fmask");
-        }
-        modify->fix[modify->nfix] = fix;
-        modify->fmask[modify->nfix] = fix->setmask();
-        modify->nfix++;
-    }
+    if (fix && modify->fix[modify->nfix - 1] == fix) return fix;
 
-    // last in the list: its setup() must follow the walls' (post_force)
-    int k = 0;
-    while (modify->fix[k] != fix) k++;
-    for (; k < modify->nfix - 1; k++)
+    // Last in the list: its setup() must follow the walls' (post_force).
+    // Moving it in place would break the fix indices that Atom keeps for
+    // its per-atom callbacks; Modify::delete_fix updates them, and this
+    // fix keeps no state between runs (the models look it up at init).
+    if (fix) modify->delete_fix(fixId);
+    char id[sizeof(fixId)], group[] = "all", style[sizeof(fixStyle)];
+    std::strcpy(id, fixId);
+    std::strcpy(style, fixStyle);
+    char *arg[3] = {id, group, style};
+    fix = new FixColloidImplicit(lmp, 3, arg);
+    // appended as Modify::add_fix does it
+    if (modify->nfix == modify->maxfix)
     {
-        modify->fix[k] = modify->fix[k + 1];
-        modify->fmask[k] = modify->fmask[k + 1];
+        modify->maxfix += 16;
+        modify->fix = (Fix **) lmp->memory->srealloc(modify->fix,
+            modify->maxfix*sizeof(Fix *), "modify:fix");
+        lmp->memory->grow(modify->fmask, modify->maxfix, "modify:fmask");
     }
-    modify->fix[k] = fix;
-    modify->fmask[k] = fix->setmask();
+    modify->fix[modify->nfix] = fix;
+    modify->fmask[modify->nfix] = fix->setmask();
+    modify->nfix++;
     return fix;
 }
 
@@ -128,6 +129,7 @@ FixColloidImplicit::FixColloidImplicit(LAMMPS *lmp, int narg, char **arg)
   uf_(NULL),
   dragforce_(NULL),
   impulse_(NULL),
+  integrated_(0),
   nSolves_(0),
   nIterations_(0),
   maxIterations_(0),
@@ -154,6 +156,11 @@ void FixColloidImplicit::init()
     if (!atom->rmass_flag)
         error->all(FLERR, "colloid/implicit needs per-particle masses (atom_style granular)");
     findDragProperties();
+    // the particles whose velocity an integrator updates; the others (a
+    // fixed bed, say) keep theirs and act on their neighbours like walls
+    integrated_ = 0;
+    for (int i = 0; i < modify->nfix; i++)
+        if (modify->fix[i]->time_integrate) integrated_ |= modify->fix[i]->groupbit;
     if (Ksl_ && modify->n_fixes_style("couple/cfd/force") > 0)
         error->all(FLERR, "colloid/implicit: a 'fix couple/cfd/force...' applies the drag "
                           "Ksl (uf - v) explicitly, and colloid/implicit applies it "
@@ -243,7 +250,7 @@ void FixColloidImplicit::multiply(double h, const double *p, double *q) const
     const double *K = Ksl_ ? Ksl_->vector_atom : NULL;
     for (int i = 0; i < nlocal; i++)
     {
-        const double d = m[i] + (K ? h*K[i] : 0.0);
+        const double d = m[i] + (K ? dragWeight*h*K[i] : 0.0);
         for (int k = 0; k < 3; k++) q[3*i + k] = d*p[3*i + k];
     }
     for (const PairTerm & t : pairs_)
@@ -289,7 +296,7 @@ void FixColloidImplicit::solve(double h, bool accumulateImpulse)
     for (int i = 0; i < nlocal; i++)
     {
         const double Ki = K ? K[i] : 0.0;
-        const double d = m[i] + h*Ki;
+        const double d = m[i] + dragWeight*h*Ki;
         block_[6*i] = block_[6*i + 1] = block_[6*i + 2] = d;
         for (int k = 0; k < 3; k++)
         {
@@ -317,6 +324,11 @@ void FixColloidImplicit::solve(double h, bool accumulateImpulse)
         for (int k = 0; k < 3; k++) r_[3*t.i + k] -= rel*t.n[k];
     }
     for (int i = 0; i < nlocal; i++) invert(&block_[6*i]);
+    const int *mask = atom->mask;
+    // a particle without integrator keeps its velocity (x_i = 0)
+    for (int i = 0; i < nlocal; i++)
+        if (!(mask[i] & integrated_))
+            for (int k = 0; k < 6; k++) block_[6*i + k] = 0.0;
 
     // preconditioned conjugate gradients on (M + h R) x = r
     for (int i = 0; i < nlocal; i++) applyBlock(&block_[6*i], &r_[3*i], &z_[3*i]);
@@ -365,8 +377,8 @@ void FixColloidImplicit::solve(double h, bool accumulateImpulse)
     for (int i = 0; i < nlocal; i++)
         for (int k = 0; k < 3; k++)
         {
-            f[i][k] = m[i]*x_[3*i + k]/h;
-            if (impulse) impulse[i][k] += h*K[i]*(uf[i][k] - (v[i][k] + x_[3*i + k]));
+            if (mask[i] & integrated_) f[i][k] = m[i]*x_[3*i + k]/h;
+            if (impulse) impulse[i][k] += h*K[i]*(uf[i][k] - (v[i][k] + dragWeight*x_[3*i + k]));
         }
 }
 

@@ -10,7 +10,7 @@
    outside the implicit update biases the overdamped drift by a term of
    order dt/tau_Stokes. Backward Euler on the whole damping matrix R has
    neither problem:
-       (M + dt R) v' = M v + dt (f + K u_f),
+       (M + dt R) v' = M v + dt (f + K u_f)     [drag: see below],
    f: every other force of the step (contact, surface forces, gravity,
    the coupling's explicit drag part), all evaluated before this fix;
    R = sum over lubricated pairs c n n^T (e_i - e_j)(e_i - e_j)^T
@@ -21,12 +21,18 @@
      - a state in force balance (R v = f + K u_f) is kept exactly: the
        quasi-static (overdamped) drift is exact at any step;
      - every pair's damping impulse is equal and opposite (momentum kept).
+   The drag takes the trapezoidal rule instead, K (u_f - (v + v')/2):
+   second order for a particle's relaxation, A-stable, still exact in
+   force balance; the matrix then has K/2 on its diagonal.
    The system is solved by conjugate gradients preconditioned with each
    particle's own 3x3 block (M + dt R)_ii, to a relative residual of
    1e-10 in the preconditioned norm; an isolated pair takes two or three
    iterations. Ghost atoms' search directions come by forward
    communication, so the solve is the same serial and parallel (newton off:
    a pair across a processor boundary is on both ranks' lists).
+
+   Particles that no fix integrates (e.g. a fixed bed) keep their
+   velocity: they enter the system like walls.
 
    The fix sets each particle's force to M (v' - v)/dt in
    pre_final_integrate, after every post_force fix: the velocity-Verlet
@@ -35,7 +41,8 @@
    extended from a plugin (Modify::fix_map is private), so the fix is
    created by code, not by a "fix" command: attach() appends it to
    Modify's public fix list the way Modify::add_fix does, and keeps it
-   last so that its setup() also sees every wall's forces.
+   last (re-creating it at the end when fixes were added after it) so
+   that its setup() also sees every wall's forces.
 
    Statistics of the run (since its init) as the fix's global vector,
    e.g. "thermo_style custom step f_colloid_implicit[2]": [1] updates,
@@ -60,9 +67,10 @@ namespace LAMMPS_NS {
 class FixColloidImplicit : public Fix
 {
 public:
-    //- The fix of this LIGGGHTS instance, created if absent, and moved to
-    //  the end of the fix list. Call before Modify::init (e.g. from a pair
-    //  style's init, or between runs).
+    //- The fix of this LIGGGHTS instance, created if absent or if it is
+    //  not the last fix (the old one is deleted: pointers to it become
+    //  invalid). Call before Modify::init (e.g. from a pair style's init,
+    //  or between runs).
     static FixColloidImplicit *attach(LAMMPS *lmp);
 
     //- The fix of this instance, or NULL
@@ -115,6 +123,9 @@ private:
     Fix *uf_;
     Fix *dragforce_;
     Fix *impulse_;
+
+    // group bits of the time-integrated particles (the unknowns)
+    int integrated_;
 
     // work arrays, 3 per atom (p includes ghosts)
     std::vector<double> x_, r_, z_, p_, q_, block_;

@@ -1,12 +1,14 @@
 /*---------------------------------------------------------------------------*\
     colloidFoam DEM test: two equal spheres (R = 5 um), initially at rest
     10 nm apart, pulled together by van der Waals attraction against normal
-    lubrication (cohesion colloid/vdw/lub, pairwise implicit) and Stokes drag
-    on each sphere (fix viscous). The DEM step is several times the
-    relaxation time mr/c (mr = m/2) of the lubrication resistance at the end gap, so an
-    explicit lubrication force would be unstable there. The drag stays
-    explicit; its splitting error is first order in dt/tau (tau = m/gamma,
-    the Stokes time), so dt = tau/200 here.
+    lubrication (cohesion colloid/vdw/lub, in the plugin's implicit update)
+    and Stokes drag on each sphere (LIGGGHTS' fix viscous, explicit). The
+    DEM step is several times the relaxation time mr/c (mr = m/2) of the
+    lubrication resistance at the end gap, so an explicit lubrication force
+    would be unstable there. The drag of fix viscous stays outside the
+    implicit update; its splitting error is first order in dt/tau (tau =
+    m/gamma, the Stokes time), so dt = tau/200 here (the coupling's drag is
+    inside it: stiffTest.cpp, approachAtStokesTime).
 
     Reference: the same motion solved in the test by RK4 with a step of
     2e-10 s, checked against half that step (1e-6). By symmetry v2 = -v1 = -v, gap h:

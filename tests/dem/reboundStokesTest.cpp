@@ -40,7 +40,7 @@
        its rest gap h_s then follows from Lambda(h_s). DEM and reference
        agree within 1 % of v0 in e_wet at every St, and where the sphere
        stops, within 1 % of v0 in the lubrication impulse to its rest
-       gap, |Lambda_DEM - Lambda_ref|/St <= 0.01. (The pairwise implicit
+       gap, |Lambda_DEM - Lambda_ref|/St <= 0.01. (The implicit
        lubrication is first order in c dt/m, 0.014 in contact at St = 40
        with dt = t_c/100, and velocity Verlet splits its kicks; the
        differences, at most 0.0014 and 0.0026, halve with dt.) On a mesh

@@ -7,7 +7,8 @@ target_include_directories(stiffTests PRIVATE ${LIGGGHTS_INCLUDE_DIR})
 target_link_libraries(stiffTests PRIVATE liggghtsColloid GTest::gtest GTest::gtest_main)
 
 foreach(name lubricatedCluster13 lubricatedBlock108OnWall vdwCluster13 vdwBlock108OnWall
-        compressedRandomPacking pinnedBetweenWalls approachAtStokesTime)
+        compressedRandomPacking pinnedBetweenWalls approachAtStokesTime
+        dragRelaxation movingWallLubrication)
     add_test(NAME dem.stiff.${name} COMMAND stiffTests --gtest_filter=stiff.${name})
     set_tests_properties(dem.stiff.${name} PROPERTIES
         TIMEOUT 120 LABELS "dem;stiff"

@@ -80,6 +80,20 @@ struct Scene
     double meshSpeed = 0;           // ... moving down at this speed [um/us]
 };
 
+// contact (Walton-Braun K1, e = 0.5, friction 0.3) and the liquid's
+// viscosity, two atom types (particles, walls)
+std::string contactAndLiquid()
+{
+    std::ostringstream in;
+    in.precision(17);
+    in << "fix m1 all property/global loadingStiffness peratomtypepair 2 "
+       << K1 << ' ' << K1 << ' ' << K1 << ' ' << K1 << "\n"
+          "fix m2 all property/global coefficientRestitution peratomtypepair 2 0.5 0.5 0.5 0.5\n"
+          "fix m3 all property/global coefficientFriction peratomtypepair 2 0.3 0.3 0.3 0.3\n"
+          "fix l1 all property/global liquidViscosity scalar " << mu << "\n";
+    return in.str();
+}
+
 // 13: a particle and its twelve FCC neighbours, all gaps hIn
 std::vector<Point> cluster13()
 {
@@ -128,13 +142,8 @@ std::string input(const Scene& s, double dt, bool check)
     const std::string cohesion = s.vanDerWaals ? "colloid/vdw/lub" : "colloid/lub";
     std::ostringstream in;
     in.precision(17);
-    in << LiggghtsRun::header(2.5)
-       << "fix m1 all property/global loadingStiffness peratomtypepair 2 "
-       << K1 << ' ' << K1 << ' ' << K1 << ' ' << K1 << "\n"
-          "fix m2 all property/global coefficientRestitution peratomtypepair 2 0.5 0.5 0.5 0.5\n"
-          "fix m3 all property/global coefficientFriction peratomtypepair 2 0.3 0.3 0.3 0.3\n"
-          "fix l1 all property/global liquidViscosity scalar " << mu << "\n"
-          "fix l2 all property/global lubricationInnerCutoff scalar " << hIn << "\n"
+    in << LiggghtsRun::header(2.5) << contactAndLiquid()
+       << "fix l2 all property/global lubricationInnerCutoff scalar " << hIn << "\n"
           "fix l3 all property/global lubricationOuterCutoff scalar " << hOut << "\n";
     if (s.vanDerWaals)
     {
@@ -440,5 +449,123 @@ TEST(stiff, approachAtStokesTime)
         ASSERT_GT(tHit, 0) << "dt " << dt << " us: the gap did not reach " << hEnd << " um";
         EXPECT_TRUE(monotone) << "dt " << dt << " us: the gap did not fall monotonically";
         if (factor == 1.0) EXPECT_NEAR(tHit, T, 0.01*T) << "dt = tau_S";
+    }
+}
+
+
+/*---------------------------------------------------------------------------*\
+    dragRelaxation: one particle released at rest in a fluid moving at U,
+    drag K (u_f - v) from the per-atom Ksl and uf only (the implicit update
+    is attached by a colloid/lub pair style; there is no partner). The
+    update takes the trapezoidal rule for the drag, so its velocities are
+        v_1/2 = U (1 - g(a/2)),  v_(k+1/2) = U (1 - g(a/2) g(a)^k),
+        g(b) = (1 - b/2)/(1 + b/2),  a = K dt/m
+    (the first over the half step before the first step), to round-off, at
+    a = 0.1, 1 and 10. Also: within 1e-3 U of the exact U (1 - exp(-t/tau))
+    at a = 0.1 (second order), |v - U| shrinking every step at a = 10
+    (A-stable), and the drag impulse the update hands to the coupling
+    (colloidDragImpulse) equal to the particle's change of momentum.
+\*---------------------------------------------------------------------------*/
+TEST(stiff, dragRelaxation)
+{
+    const double U = 0.01;              // um/us
+    const double m = rho*4.0/3.0*pi*R*R*R;
+    const double K = 6*pi*mu*R;         // pg/us
+    for (double a : {0.1, 1.0, 10.0})
+    {
+        const double dt = a*m/K;
+        LiggghtsRun run;
+        std::ostringstream in;
+        in.precision(17);
+        in << LiggghtsRun::header(2) << contactAndLiquid()
+           << "pair_style gran model walton_braun tangential history cohesion colloid/lub timeStepCheck off\n"
+              "pair_coeff * *\n"
+              "timestep " << dt << "\n"
+              "fix integrate all nve/sphere\n"
+              "fix Ksl all property/atom Ksl scalar yes no no " << K << "\n"
+              "fix uf all property/atom uf vector yes no no " << U << " 0 0\n"
+              "fix colloidDragImpulse all property/atom colloidDragImpulse vector yes no no 0 0 0\n"
+              "create_atoms 1 single 0 0 0 units box\n"
+              "set atom 1 diameter " << 2*R << " density " << rho << "\n"
+              "velocity all set 0 0 0 units box\n"
+              "run 0\n";
+        run.commands(in.str());
+        auto halfStep = [&]() { return run.v(1)[0] + 0.5*dt*run.f(1)[0]/run.mass(1); };
+        auto g = [](double b) { return (1 - b/2)/(1 + b/2); };
+        const double v0 = halfStep();
+        EXPECT_NEAR(v0, U*(1 - g(a/2)), 1e-12*U) << "a = " << a << ": the half step before the first";
+        double expectedFactor = g(a/2), worstExact = 0, last = std::fabs(v0 - U);
+        bool shrinking = true;
+        for (int k = 1; k <= 30; k++)
+        {
+            run.commands("run 1 pre no post no\n");
+            expectedFactor *= g(a);
+            const double v = halfStep();
+            ASSERT_NEAR(v, U*(1 - expectedFactor), 1e-12*U) << "a = " << a << ", step " << k;
+            const double t = (k + 0.5)*dt;
+            worstExact = std::max(worstExact, std::fabs(v - U*(1 - std::exp(-K*t/m))));
+            shrinking = shrinking && std::fabs(v - U) < last;
+            last = std::fabs(v - U);
+        }
+        // the impulse of the 30 steps, against m (v_30 - v_1/2)
+        const double impulse = run.evaluate("f_colloidDragImpulse[1][1]");
+        EXPECT_NEAR(impulse, m*(halfStep() - v0), 1e-12*m*U) << "a = " << a << ": drag impulse";
+        std::cout << "K dt/m = " << a << ": largest difference from U (1 - exp(-t/tau)) "
+                  << worstExact/U << " U" << std::endl;
+        if (a == 0.1) EXPECT_LT(worstExact, 1e-3*U) << "second order at K dt/m = 0.1";
+        if (a == 10.0) EXPECT_TRUE(shrinking) << "|v - U| grew at K dt/m = 10";
+    }
+}
+
+
+/*---------------------------------------------------------------------------*\
+    movingWallLubrication: a particle at rest 2 nm above a mesh wall that
+    moves towards it at u (fix move/mesh); lubrication only. One step of
+    the implicit update must give the backward-Euler velocity with the
+    wall's velocity,
+        v' = (m v + dt c u)/(m + dt c),  c = 6 pi mu R^2 (1/h - 1/h_out),
+    h the gap at the step's force evaluation, to round-off.
+\*---------------------------------------------------------------------------*/
+TEST(stiff, movingWallLubrication)
+{
+    const double u = 0.1;           // um/us, wall towards the particle
+    const double h0 = 0.002;        // um
+    const double dt = 1e-4;         // us
+    writeSquareStl("movingWall.stl", 1.5, 0);
+    LiggghtsRun run;
+    std::ostringstream in;
+    in.precision(17);
+    in << LiggghtsRun::header(2) << contactAndLiquid()
+       << "fix l2 all property/global lubricationInnerCutoff scalar " << hIn << "\n"
+          "fix l3 all property/global lubricationOuterCutoff scalar " << hOut << "\n"
+          "neighbor 0.2 bin\n"
+          "neigh_modify delay 0\n"
+          "pair_style gran model walton_braun tangential history cohesion colloid/lub\n"
+          "pair_coeff * *\n"
+          "timestep " << dt << "\n"
+          "fix integrate all nve/sphere\n"
+          "fix wallMesh all mesh/surface file movingWall.stl type 2\n"
+          "fix wallMove all move/mesh mesh wallMesh linear 0 0 " << u << "\n"
+          "fix wall all wall/gran model walton_braun tangential history cohesion colloid/lub "
+          "mesh n_meshes 1 meshes wallMesh\n"
+          "create_atoms 1 single 0.1 -0.2 " << R + h0 << " units box\n"
+          "set atom 1 diameter " << 2*R << " density " << rho << "\n"
+          "velocity all set 0 0 0 units box\n"
+          "run 0\n";
+    run.commands(in.str());
+    const double m = run.mass(1);
+    for (int k = 1; k <= 3; k++)
+    {
+        const double v = run.v(1)[2] + 0.5*dt*run.f(1)[2]/m;
+        const double z = run.x(1)[2];
+        run.commands("run 1 pre no post no\n");
+        // positions at the force evaluation of this step
+        const double h = z + dt*v - R - u*k*dt;
+        const double c = 6*pi*mu*R*R*(1/h - 1/hOut);
+        const double expected = (m*v + dt*c*u)/(m + dt*c);
+        const double vNew = run.v(1)[2] + 0.5*dt*run.f(1)[2]/m;
+        std::cout << "step " << k << ": gap " << h << " um, c dt/m " << c*dt/m
+                  << ", v' " << vNew << " um/us, backward Euler " << expected << std::endl;
+        EXPECT_NEAR(vNew, expected, 1e-9*std::fabs(expected)) << "step " << k;
     }
 }

@@ -2,8 +2,9 @@
     Unit tests of lubrication.H.
 
     References: Reynolds' squeeze-film results written out here (equal
-    spheres 3 pi mu R^2 v/(2h), sphere-plane 6 pi mu R^2 v/h); the exact
-    exponential decay of the relative velocity under a constant resistance.
+    spheres 3 pi mu R^2 v/(2h), sphere-plane 6 pi mu R^2 v/h). The implicit
+    update that applies the resistance is tested in LIGGGHTS
+    (tests/dem/stiffTest.cpp, lubricationApproachTest.cpp).
 \*---------------------------------------------------------------------------*/
 #include "constants.H"
 #include "lubrication.H"
@@ -96,132 +97,6 @@ TEST(Lubrication, SymmetricAndContinuousAtCutoffs)
     const double c = lub.resistance(R1, R2, hOut - dh);
     EXPECT_NEAR(c, 6*pi*mu*Rs*Rs*dh/(hOut*hOut), 1e-5*c);
     EXPECT_EQ(lub.resistance(R1, R2, hOut), 0.0);
-}
-
-TEST(Lubrication, ImplicitUpdateIsBackwardEulerAndNeverReversesVelocity)
-{
-    const Lubrication lub = make();
-    const double R = 0.15e-6;
-    const double m = 2500*pi/6*std::pow(2*R, 3);
-    const double mStar = m/2;
-    const double v = -1e-3;
-    const double c = lub.resistance(R, R, hIn);
-    for (double a : {1e-3, 1.0, 1e2, 1e4, 1e6})
-    {
-        const double dt = a*mStar/c;
-        const double F = lub.implicitForce(R, R, hIn, v, mStar, dt);
-        const double vNew = v + F*dt/mStar;     // explicit application
-        EXPECT_NEAR(vNew, v/(1 + a), 1e-12*std::fabs(v)) << "c dt/m* = " << a;
-        EXPECT_GE(vNew/v, 0.0) << "velocity reversed at c dt/m* = " << a;
-        EXPECT_LE(std::fabs(vNew), std::fabs(v));
-    }
-}
-
-TEST(Lubrication, ImplicitUpdateConvergesFirstOrderToExponentialDecay)
-{
-    // Constant gap: m* dv/dt = -c v, v(t) = v0 exp(-c t/m*)
-    const Lubrication lub = make();
-    const double R = 0.15e-6, h = 5e-9;
-    const double mStar = 2500*pi/6*std::pow(2*R, 3)/2;
-    const double c = lub.resistance(R, R, h);
-    const double v0 = -1e-3;
-    const double tEnd = 2*mStar/c;
-    const double exact = v0*std::exp(-c*tEnd/mStar);
-    double previousError = 0;
-    for (int n : {20, 40, 80, 160, 320})
-    {
-        const double dt = tEnd/n;
-        double v = v0;
-        for (int i = 0; i < n; ++i)
-        {
-            v += lub.implicitForce(R, R, h, v, mStar, dt)*dt/mStar;
-        }
-        const double error = std::fabs(v - exact);
-        if (n > 20)
-        {
-            // first order: halving dt halves the error (order 1 within 5 %)
-            const double order = std::log2(previousError/error);
-            EXPECT_NEAR(order, 1.0, 0.05) << "n = " << n;
-        }
-        previousError = error;
-    }
-    // and the error itself is small at the finest step: ~ (c dt/m*)/2 relative
-    EXPECT_LT(previousError, 0.01*std::fabs(exact));
-}
-
-namespace
-{
-
-// A sphere (radius R, mass m) pulled at a wall by a constant force F0 (as
-// van der Waals would), the lubrication film resisting, stepped with the
-// pairwise implicit update and symplectic Euler. Returns the time to go
-// from gap hStart to hEnd; fails the test on a reversal or an overshoot of
-// the overdamped drift -F0/c(h).
-double approachTime(const Lubrication& lub, double R, double m, double F0, double dt, double hStart, double hEnd)
-{
-    double h = hStart, v = 0, t = 0;
-    while (h > hEnd)
-    {
-        const double F = lub.implicitForce(R, wallRadius, h, v, m, dt, -F0) - F0;
-        const double vNew = v + F*dt/m;
-        EXPECT_TRUE(std::isfinite(vNew));
-        EXPECT_LE(vNew, 0.0) << "sphere moved away from the wall at h = " << h;
-        // backward Euler relaxes v monotonically towards the drift -F0/c(h):
-        // the new velocity lies between the old one and the drift
-        const double drift = -F0/lub.resistance(R, wallRadius, h);
-        const double tol = 1e-12*std::fabs(drift);
-        EXPECT_LE(vNew, std::max(v, drift) + tol) << "overshoot at h = " << h;
-        EXPECT_GE(vNew, std::min(v, drift) - tol) << "overshoot at h = " << h;
-        if (vNew > 0 || !std::isfinite(vNew)) return -1;
-        v = vNew;
-        const double hNew = h + v*dt;
-        if (hNew <= hEnd)
-        {
-            return t + (h - hEnd)/(-v);     // last partial step
-        }
-        h = hNew;
-        t += dt;
-    }
-    return t;
-}
-
-} // namespace
-
-
-TEST(Lubrication, DrivenAtWallApproachTimeMatchesOverdampedSolution)
-{
-    // Overdamped (m/c ~ 1e-10 s << approach time ~ 1e-4 s):
-    // c(h) dh/dt = -F0 -> t = 6 pi mu R^2 [ln(h1/h2) - (h1 - h2)/h_out]/F0
-    const Lubrication lub = make();
-    const double R = 0.15e-6;
-    const double m = 2500*pi/6*std::pow(2*R, 3);
-    const double F0 = 1e-11;
-    const double h1 = 50e-9, h2 = 2e-9;
-    const double exact = 6*pi*mu*R*R*(std::log(h1/h2) - (h1 - h2)/hOut)/F0;
-    // c dt/m* reaches ~1e3 near h2: a fully explicit update would blow up
-    const double dt = exact/4000;
-    ASSERT_GT(lub.resistance(R, wallRadius, h2)*dt/m, 100.0);
-    const double t = approachTime(lub, R, m, F0, dt, h1, h2);
-    EXPECT_NEAR(t, exact, 0.01*exact);
-}
-
-TEST(Lubrication, DrivenAtWallStaysStableAtHugeStiffness)
-{
-    // dt with c(h_in) dt/m* = 1e6 and a weak pull, so that hundreds of
-    // steps are taken between 3 h_in and h_in at c dt/m* ~ 3e5..1e6: no
-    // reversal, no overshoot of the drift, and the approach time still
-    // matches the overdamped solution (first-order error ~ the relative
-    // gap change per step, < 1 %)
-    const Lubrication lub = make();
-    const double R = 0.15e-6;
-    const double m = 2500*pi/6*std::pow(2*R, 3);
-    const double F0 = 5e-14;
-    const double dt = 1e6*m/lub.resistance(R, wallRadius, hIn);
-    const double h1 = 3*hIn, h2 = hIn;
-    const double exact = 6*pi*mu*R*R*(std::log(h1/h2) - (h1 - h2)/hOut)/F0;
-    ASSERT_GT(exact/dt, 100.0);
-    const double t = approachTime(lub, R, m, F0, dt, h1, h2);
-    EXPECT_NEAR(t, exact, 0.02*exact);
 }
 
 TEST(Lubrication, RejectsBadParameters)
