@@ -44,6 +44,7 @@ COHESION_MODEL(COHESION_COLLOID_VDW_DL_LUB,colloid/vdw/dl/lub,23)
 #include <stdexcept>
 #include <vector>
 #include <cstdio>
+#include <cstring>
 #include <mpi.h>
 #include "atom.h"
 #include "comm.h"
@@ -263,26 +264,49 @@ private:
     }
 
     // Limits for two of the lightest particles, printed by the pair style:
-    // the van der Waals "spring" at its inner cut-off (dt <= 1/10 of
-    // sqrt(m*/k)); with lubrication the pair is overdamped there and the
-    // explicit pull needs only dt <= 1/10 of c/k. The lubrication
-    // relaxation time m*/c is printed, not enforced (implicit).
+    // the van der Waals and double-layer "springs" |dF/dh| at their inner
+    // cut-offs (dt <= 1/10 of sqrt(m*/k)); with lubrication the pair is
+    // overdamped there and the explicit force needs only dt <= 1/10 of
+    // c/k (the implicit update with an explicit spring is stable up to
+    // dt = 2 c/k). The lubrication relaxation time m*/c is printed, not
+    // enforced (implicit). LIGGGHTS' fix viscous applies its drag
+    // explicitly: dt <= 1/10 of the relaxation time m/gamma.
     void checkTimeStep()
     {
         using namespace colloid::timeStep;
         Colloid::TimeStepCheck check(lmp, name_, timeStepCheck_);
+        // time scale of a spring k [N/m] between two particles of mass m
+        // and radius R at gap h, damped by lubrication if it is on
+        auto springScale = [&](double m, double R, double k, double h)
+        {
+            if (!(k > 0.0)) return HUGE_VAL;
+            const double spring = springTime(m/2, k);
+            return lubOn ? std::max(spring, lub_.front().resistance(R, R, h)/k) : spring;
+        };
         if (vdwOn)
         {
             const double t = check.smallest([&](double m, double R, int type)
             {
                 const double A = vdw_[pairIndex(type, type)].parameters().hamakerConstant;
-                const double k = vanDerWaalsStiffness(A, R/2, vdwInnerCutoff_);
-                if (!(k > 0.0)) return HUGE_VAL;
-                const double spring = springTime(m/2, k);
-                return lubOn ? std::max(spring, lub_.front().resistance(R, R, vdwInnerCutoff_)/k) : spring;
+                return springScale(m, R, vanDerWaalsStiffness(A, R/2, vdwInnerCutoff_), vdwInnerCutoff_);
             });
             check.limit(lubOn ? "van der Waals spring at its inner cut-off, damped by lubrication"
                               : "van der Waals spring at its inner cut-off", t, 0.1);
+        }
+        if (dlOn)
+        {
+            const double t = check.smallest([&](double m, double R, int type)
+            {
+                // slope of the kernel's force (either form) over a small
+                // fraction of the decay length
+                const colloid::DoubleLayer & dl = dl_[pairIndex(type, type)];
+                const double h0 = dl.parameters().innerCutoff;
+                const double dh = 1e-7*std::min(h0, dl.debyeLength());
+                const double k = (dl.force(R, R, h0) - dl.force(R, R, h0 + dh))/dh;
+                return springScale(m, R, k, h0);
+            });
+            check.limit(lubOn ? "double-layer spring at its inner cut-off, damped by lubrication"
+                              : "double-layer spring at its inner cut-off", t, 0.1);
         }
         if (lubOn)
         {
@@ -292,6 +316,17 @@ private:
                 return lubricationTime(m/2, p.viscosity, R/2, p.innerCutoff, p.outerCutoff);
             });
             check.limit("lubrication relaxation at its inner cut-off", t, 0.0);
+        }
+        for (int f = 0; f < modify->nfix; f++)
+        {
+            if (std::strcmp(modify->fix[f]->style, "viscous") != 0) continue;
+            const double *gamma = Colloid::viscousGamma(static_cast<FixViscous*>(modify->fix[f]));
+            const double t = check.smallest([&](double m, double, int type)
+            {
+                return gamma[type] > 0.0 ? m/(gamma[type]*U::dampingCoeff) : HUGE_VAL;
+            });
+            check.limit("relaxation time m/gamma of the explicit drag of fix viscous "
+                        "(the drag through per-atom Ksl and uf is implicit, see README)", t, 0.1);
         }
     }
 

@@ -8,8 +8,9 @@
    dt > fraction x that time scale, unless the pair style says
    "timeStepCheck off" (expert override: a warning instead). Terms that are
    integrated implicitly (lubrication) are printed but not enforced. The
-   time scales are the kernels' (src/colloidModels/timeStepLimits.H); the
-   Stokes relaxation time belongs to the fluid coupling and is not here.
+   time scales are the kernels' (src/colloidModels/timeStepLimits.H). The
+   coupling's drag is implicit and its Stokes time the coupling's to
+   check; LIGGGHTS' own explicit fix viscous is checked here.
 ------------------------------------------------------------------------- */
 
 #ifndef COLLOID_TIME_STEP_H
@@ -20,6 +21,7 @@
 #include "atom.h"
 #include "comm.h"
 #include "error.h"
+#include "fix_viscous.h"
 #include "input.h"
 #include "lammps.h"
 #include "update.h"
@@ -28,6 +30,22 @@
 
 namespace LIGGGHTS {
 namespace Colloid {
+
+// The per-type drag coefficients gamma [run units] of a LIGGGHTS fix
+// viscous, a protected member: read through a pointer to member formed
+// in a derived class (never instantiated)
+struct ViscousGammaAccess : LAMMPS_NS::FixViscous
+{
+    static double *of(LAMMPS_NS::FixViscous *fix)
+    {
+        return fix->*(&ViscousGammaAccess::gamma);
+    }
+};
+
+inline const double *viscousGamma(LAMMPS_NS::FixViscous *fix)
+{
+    return ViscousGammaAccess::of(fix);
+}
 
 class TimeStepCheck
 {

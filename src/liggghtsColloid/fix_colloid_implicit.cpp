@@ -133,11 +133,12 @@ FixColloidImplicit::FixColloidImplicit(LAMMPS *lmp, int narg, char **arg)
   nSolves_(0),
   nIterations_(0),
   maxIterations_(0),
-  nNotConverged_(0)
+  nNotConverged_(0),
+  seconds_(0.0)
 {
     comm_forward = 3;
     vector_flag = 1;
-    size_vector = 4;
+    size_vector = 5;
     global_freq = 1;
     extvector = 0;
 }
@@ -166,8 +167,6 @@ void FixColloidImplicit::init()
                           "Ksl (uf - v) explicitly, and colloid/implicit applies it "
                           "implicitly: remove the couple/cfd fixes and keep the "
                           "property/atom fixes Ksl, uf and dragforce");
-    nSolves_ = nIterations_ = nNotConverged_ = 0;
-    maxIterations_ = 0;
 }
 
 void FixColloidImplicit::findDragProperties()
@@ -214,7 +213,8 @@ double FixColloidImplicit::compute_vector(int n)
         case 0: return nSolves_;
         case 1: return nSolves_ ? double(nIterations_)/nSolves_ : 0.0;
         case 2: return maxIterations_;
-        default: return nNotConverged_;
+        case 3: return nNotConverged_;
+        default: return seconds_;
     }
 }
 
@@ -269,13 +269,22 @@ void FixColloidImplicit::multiply(double h, const double *p, double *q) const
 
 void FixColloidImplicit::solve(double h, bool accumulateImpulse)
 {
+    const double start = MPI_Wtime();
+    solveSystem(h, accumulateImpulse);
+    seconds_ += MPI_Wtime() - start;
+}
+
+void FixColloidImplicit::solveSystem(double h, bool accumulateImpulse)
+{
     collecting_ = false;
     findDragProperties();
-    int anyLocal = !pairs_.empty() || !walls_.empty(), any = 0;
-    MPI_Allreduce(&anyLocal, &any, 1, MPI_INT, MPI_MAX, world);
-    if (!any && !Ksl_) return;
-
     const int nlocal = atom->nlocal;
+    const int *mask = atom->mask;
+    int local[2] = {!pairs_.empty() || !walls_.empty(), 0}, any[2] = {0, 0};
+    for (int i = 0; i < nlocal && !local[1]; i++) local[1] = !(mask[i] & integrated_);
+    MPI_Allreduce(local, any, 2, MPI_INT, MPI_MAX, world);
+    if (!any[0] && !Ksl_) return;
+
     const int n = 3*nlocal;
     double **v = atom->v;
     double **f = atom->f;
@@ -324,8 +333,10 @@ void FixColloidImplicit::solve(double h, bool accumulateImpulse)
         for (int k = 0; k < 3; k++) r_[3*t.i + k] -= rel*t.n[k];
     }
     for (int i = 0; i < nlocal; i++) invert(&block_[6*i]);
-    const int *mask = atom->mask;
-    // a particle without integrator keeps its velocity (x_i = 0)
+    // a particle without integrator keeps its velocity (x_i = 0); its
+    // force is that of its start residual with its neighbours' new
+    // velocities (below)
+    if (any[1]) r0_ = r_;
     for (int i = 0; i < nlocal; i++)
         if (!(mask[i] & integrated_))
             for (int k = 0; k < 6; k++) block_[6*i + k] = 0.0;
@@ -371,6 +382,17 @@ void FixColloidImplicit::solve(double h, bool accumulateImpulse)
     nIterations_ += iterations;
     maxIterations_ = std::max(maxIterations_, iterations);
 
+    // forces on the particles without integrator: r0 - (M + h R) x there
+    if (any[1])
+    {
+        for (int k = 0; k < n; k++) p_[k] = x_[k];
+        comm->forward_comm_fix(this);
+        multiply(h, p_.data(), q_.data());
+        for (int i = 0; i < nlocal; i++)
+            if (!(mask[i] & integrated_))
+                for (int k = 0; k < 3; k++) f[i][k] = (r0_[3*i + k] - q_[3*i + k])/h;
+    }
+
     // the force whose kick of h gives v' = v + x; the drag impulse the
     // coupling hands to the fluid
     double **impulse = (accumulateImpulse && impulse_ && K) ? impulse_->array_atom : NULL;
@@ -403,5 +425,6 @@ double FixColloidImplicit::memory_usage()
 {
     return sizeof(PairTerm)*pairs_.capacity() + sizeof(WallTerm)*walls_.capacity()
          + sizeof(double)*(x_.capacity() + r_.capacity() + z_.capacity()
-                           + p_.capacity() + q_.capacity() + block_.capacity());
+                           + p_.capacity() + q_.capacity() + block_.capacity()
+                           + r0_.capacity());
 }

@@ -32,7 +32,9 @@
    a pair across a processor boundary is on both ranks' lists).
 
    Particles that no fix integrates (e.g. a fixed bed) keep their
-   velocity: they enter the system like walls.
+   velocity: they enter the system like walls, and their force is the
+   damping at their neighbours' new velocities (what a force output or
+   the fluid coupling reads).
 
    The fix sets each particle's force to M (v' - v)/dt in
    pre_final_integrate, after every post_force fix: the velocity-Verlet
@@ -44,10 +46,11 @@
    last (re-creating it at the end when fixes were added after it) so
    that its setup() also sees every wall's forces.
 
-   Statistics of the run (since its init) as the fix's global vector,
-   e.g. "thermo_style custom step f_colloid_implicit[2]": [1] updates,
-   [2] mean and [3] largest number of iterations, [4] updates that did not
-   converge in 200 iterations (they warn once).
+   Statistics since the fix was created, as its global vector, e.g.
+   "thermo_style custom step f_colloid_implicit[2]": [1] updates, [2] mean
+   and [3] largest number of iterations, [4] updates that did not converge
+   in 200 iterations (they warn once), [5] wall-clock seconds spent in the
+   updates (this rank).
 
    Who attaches it: every pair style with a colloid cohesion model (at its
    init, before Modify's), and the CFD coupling (colloidImplicitUpdate()).
@@ -109,6 +112,7 @@ private:
     // the solve with step h [run units]; the force set makes the next
     // kick of h give the backward-Euler velocity
     void solve(double h, bool accumulateImpulse);
+    void solveSystem(double h, bool accumulateImpulse);
     void findDragProperties();
     void multiply(double h, const double *p, double *q) const;
     double dot(const double *a, const double *b, int n) const;
@@ -128,13 +132,14 @@ private:
     int integrated_;
 
     // work arrays, 3 per atom (p includes ghosts)
-    std::vector<double> x_, r_, z_, p_, q_, block_;
+    std::vector<double> x_, r_, z_, p_, q_, block_, r0_;
 
     // statistics of the run
     long nSolves_;
     long nIterations_;
     int maxIterations_;
     long nNotConverged_;
+    double seconds_;                // wall-clock time of the updates [s]
 };
 
 }

@@ -37,6 +37,8 @@ TANGENTIAL_MODEL(TANGENTIAL_WALTON_BRAUN,walton_braun,20)
 #include <cmath>
 #include <stdexcept>
 #include <vector>
+#include <cstdio>
+#include "comm.h"
 #include "contact_models.h"
 #include "fix_wall_gran.h"
 #include "tangential_model_base.h"
@@ -69,6 +71,7 @@ public:
       wall_(isWall_ ? dynamic_cast<FixWallGran*>(hsetup) : NULL),
       diRenzoWall_(false),
       timeStepCheck_(true),
+      diRenzoWarned_(false),
       nTypes_(0)
     {
         // vectors change sign when seen from the other particle ("1")
@@ -155,6 +158,8 @@ public:
         colloid::Vec3 Ft;
         if (isWall_ && diRenzoWall_)
         {
+            checkDiRenzoStep(diRenzo_[index].stiffness(sidata.radi*U::length, sidata.deltan*U::length),
+                             sidata.i, sidata.deltan/sidata.radi);
             colloid::DiRenzoDiMaioState s;
             if (!newContact) s.shear = colloid::tangentialPart(stored(hist, LOAD, U::length), en);
             Ft = diRenzo_[index].force(sidata.radi*U::length, sidata.deltan*U::length, ds, Fn, s);
@@ -214,8 +219,8 @@ private:
     // with m_t = 2/7 m* for solid spheres (the contact point moves with the
     // rotation too): two of the lightest particles (pair style),
     // or the lightest particle against this fix's walls (m* = m). Di
-    // Renzo-Di Maio walls are not checked: their stiffness grows with the
-    // overlap, which a start-up check does not know.
+    // Renzo-Di Maio walls are checked on the fly (checkDiRenzoStep): their
+    // stiffness grows with the overlap, which a start-up check does not know.
     void checkTimeStep()
     {
         if (isWall_ && diRenzoWall_) return;
@@ -235,6 +240,42 @@ private:
                             : "tangential half-period of two of the lightest particles", t, 0.05);
     }
 
+    // The same limit for a Di Renzo-Di Maio wall contact of particle i at
+    // its current tangential stiffness k [N/m] (overlap: fraction of the
+    // radius), each step: a stop (or, with timeStepCheck off, one warning)
+    // when the overlap has made the spring too stiff for the step
+    void checkDiRenzoStep(double k, int i, double overlap)
+    {
+        const double halfPeriod = colloid::timeStep::linearContactTime(2.0/7.0*atom->rmass[i]*U::mass, k);
+        const double dt = update->dt*U::time;
+        if (dt <= 0.05*halfPeriod || diRenzoWarned_) return;
+        char msg[768];
+        std::snprintf(msg, sizeof(msg),
+            "tangential walton_braun: at step " BIGINT_FORMAT " a contact with wall '%s' "
+            "(diRenzoDiMaio on) reached an overlap of %.6g radii, where the Di Renzo-Di "
+            "Maio tangential stiffness is %g N/m: the time step %g s exceeds 0.05 x the "
+            "half-period of that spring, %g s; use a time step of %g s or less (LIGGGHTS "
+            "'timestep %g', or DEM { timeStep %g; } with colloidDEMFoam), stiffer normal "
+            "contact (less overlap), or, at your own risk, 'timeStepCheck off' on the "
+            "fix wall/gran line", update->ntimestep, wall_ ? wall_->id : "?", overlap, k,
+            dt, halfPeriod, 0.05*halfPeriod, 0.05*halfPeriod/U::time, 0.05*halfPeriod);
+        if (timeStepCheck_)
+        {
+            // only this rank knows: error->one, which aborts without
+            // flushing a redirected screen, so the message is written and
+            // flushed here first
+            for (FILE *out : {screen, logfile})
+                if (out)
+                {
+                    std::fprintf(out, "ERROR on proc %d: %s\n", comm->me, msg);
+                    std::fflush(out);
+                }
+            error->one(FLERR, msg);
+        }
+        diRenzoWarned_ = true;
+        error->warning(FLERR, msg);
+    }
+
     static colloid::Vec3 stored(const double *hist, int at, double toSI)
     {
         return {{hist[at]*toSI, hist[at + 1]*toSI, hist[at + 2]*toSI}};
@@ -249,6 +290,7 @@ private:
     FixWallGran *const wall_;   // the wall fix of a wall model, else NULL
     bool diRenzoWall_;
     bool timeStepCheck_;
+    bool diRenzoWarned_;
     int nTypes_;
     int offset_;
     std::vector<colloid::WaltonBraunTangential> waltonBraun_;  // per type pair

@@ -51,6 +51,16 @@ if(LIGGGHTS_EXECUTABLE)
             PASS_REGULAR_EXPRESSION "\\[  PASSED  \\] 1 test\\."
             WORKING_DIRECTORY ${CMAKE_CURRENT_BINARY_DIR})
     endforeach()
+    # the limits of the stiff terms (label stiff too)
+    foreach(name
+            startupLimitDoubleLayerSpring startupLimitViscousFix
+            startupLimitDiRenzoDiMaioWall)
+        add_test(NAME dem.${name} COMMAND demProcessTests --gtest_filter=*.${name})
+        set_tests_properties(dem.${name} PROPERTIES
+            TIMEOUT 60 LABELS "dem;stiff"
+            PASS_REGULAR_EXPRESSION "\\[  PASSED  \\] 1 test\\."
+            WORKING_DIRECTORY ${CMAKE_CURRENT_BINARY_DIR})
+    endforeach()
 else()
     message(WARNING "liggghts program not found: the bad-input and start-up limit tests are not built")
 endif()

@@ -34,6 +34,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <fstream>
 #include <iostream>
 #include <sstream>
 #include <string>
@@ -222,4 +223,121 @@ TEST(startupLimit, startupLimitStiffTangential)
         "pair_style gran model walton_braun tangential walton_braun");
     const ProcessResult r = runLiggghts("startupLimitStiffTangential", script);
     expectStop(r, "tangential half-period of two of the lightest particles", t, 0.05);
+}
+
+
+/*---------------------------------------------------------------------------*\
+    The limits added for stiff terms (label stiff):
+    - double layer (cohesion colloid/dl) of 0.1 um particles at zeta =
+      -0.1 V in 100 mM salt (Debye length 0.96 nm): its spring at the
+      inner cut-off h0, seed 002 eq 10 differentiated,
+          k = 128 pi R* n kT G^2 exp(-kappa h0),  G = tanh(z e zeta/(4 kT)),
+      stops dt = 0.5 ns (limit dt <= sqrt(m* /k)/10);
+    - LIGGGHTS' explicit fix viscous with m/gamma = 10 ns stops dt = 2 ns
+      (limit dt <= m/gamma/10);
+    - Di Renzo-Di Maio wall contact (checked on the fly, its stiffness
+      grows with the overlap): a sphere driven into a mesh wall stops the
+      run during the impact, the message giving the overlap, the stiffness
+      (2/3) 8 G* sqrt(R delta) and the half-period pi sqrt(2/7 m/k_t),
+      each checked here, and the largest step, 1/20 of the half-period.
+\*---------------------------------------------------------------------------*/
+TEST(startupLimit, startupLimitDoubleLayerSpring)
+{
+    const double R = 0.1e-6, zeta = -0.1, salt = 100, dt = 5e-10;
+    const double kB = 1.380649e-23, T = 298.15, e = 1.602176634e-19, NA = 6.02214076e23;
+    const double eps = 78.4*8.8541878128e-12, n = salt*NA;
+    const double kappa = std::sqrt(2*n*e*e/(eps*kB*T));
+    const double G = std::tanh(e*zeta/(4*kB*T));
+    const double k = 128*pi*(R/2)*n*kB*T*G*G*std::exp(-kappa*h0);
+    const double t = std::sqrt(mass(R)/2/k);
+    std::cout << "double layer: Debye length " << 1/kappa << " m, spring " << k << " N/m, "
+              << t << " s, dt " << dt << " s" << std::endl;
+    std::string script = pairScript(R, 1e-21, 100, 100, dt, "");
+    const std::string from = "pair_style gran model walton_braun tangential history cohesion colloid/vdw";
+    const std::size_t at = script.find(from);
+    ASSERT_NE(at, std::string::npos);
+    std::ostringstream dl;
+    dl << "fix d1 all property/global zetaPotential peratomtype " << zeta << ' ' << zeta << "\n"
+          "fix d2 all property/global saltConcentration scalar " << salt << "\n"
+          "fix d3 all property/global doubleLayerOuterCutoff scalar 0.05\n"
+          "pair_style gran model walton_braun tangential history cohesion colloid/dl";
+    script.replace(at, from.size(), dl.str());
+    const ProcessResult r = runLiggghts("startupLimitDoubleLayerSpring", script);
+    expectStop(r, "double-layer spring at its inner cut-off", t, 0.1);
+}
+
+
+TEST(startupLimit, startupLimitViscousFix)
+{
+    const double R = 0.5e-6, A = 1e-21, dt = 2e-9, tau = 1e-8;
+    const double gamma = mass(R)/tau;           // kg/s
+    std::string script = pairScript(R, A, 100, 100, dt, "");
+    const std::string before = "fix integrate all nve/sphere\n";
+    const std::size_t at = script.find(before);
+    ASSERT_NE(at, std::string::npos);
+    std::ostringstream viscous;
+    viscous.precision(17);
+    viscous << "fix drag all viscous " << gamma/1e-9 << "\n";
+    script.insert(at, viscous.str());
+    const ProcessResult r = runLiggghts("startupLimitViscousFix", script);
+    expectStop(r, "relaxation time m/gamma of the explicit drag of fix viscous "
+                  "(the drag through per-atom Ksl and uf is implicit, see README)", tau, 0.1);
+}
+
+
+TEST(startupLimit, startupLimitDiRenzoDiMaioWall)
+{
+    const double R = 0.5e-6, E = 1e8, nu = 0.3, dt = 3e-9;
+    std::ofstream stl("diRenzoWall.stl");
+    stl << "solid wall\n"
+           "facet normal 0 0 1\nouter loop\nvertex -3 -3 0\nvertex 3 -3 0\nvertex 3 3 0\nendloop\nendfacet\n"
+           "facet normal 0 0 1\nouter loop\nvertex -3 -3 0\nvertex 3 3 0\nvertex -3 3 0\nendloop\nendfacet\n"
+           "endsolid wall\n";
+    stl.close();
+    std::ostringstream s;
+    s.precision(17);
+    s << "units micro\n"
+         "atom_style granular\n"
+         "atom_modify map array\n"
+         "boundary f f f\n"
+         "newton off\n"
+         "communicate single vel yes\n"
+         "region box block -5 5 -5 5 -5 5 units box\n"
+         "create_box 2 box\n"
+         "neighbor 0.1 bin\n"
+         "neigh_modify delay 0\n"
+         "fix m1 all property/global loadingStiffness peratomtypepair 2 100 100 100 100\n"
+         "fix m2 all property/global coefficientRestitution peratomtypepair 2 0.5 0.5 0.5 0.5\n"
+         "fix m3 all property/global coefficientFriction peratomtypepair 2 0.3 0.3 0.3 0.3\n"
+         "fix m4 all property/global tangentialStiffness peratomtypepair 2 100 100 100 100\n"
+         "fix m5 all property/global youngsModulus peratomtype " << E/1e3 << ' ' << E/1e3 << "\n"
+         "fix m6 all property/global poissonsRatio peratomtype " << nu << ' ' << nu << "\n"
+         "pair_style gran model walton_braun tangential walton_braun\n"
+         "pair_coeff * *\n"
+         "timestep " << dt/1e-6 << "\n"
+         "fix wallMesh all mesh/surface file diRenzoWall.stl type 2\n"
+         "fix wall all wall/gran model walton_braun tangential walton_braun "
+         "mesh n_meshes 1 meshes wallMesh diRenzoDiMaio on\n"
+         "fix integrate all nve/sphere\n"
+         "create_atoms 1 single 0 0 " << (R + 5e-9)/1e-6 << " units box\n"
+         "set atom 1 diameter " << 2*R/1e-6 << " density " << rho/1000 << " vx 0.5 vz -1\n"
+         "run 200\n";
+    const ProcessResult r = runLiggghts("startupLimitDiRenzoDiMaioWall", s.str());
+    EXPECT_GT(r.status, 0) << r.output;
+    const std::size_t at = r.output.find("ERROR");
+    ASSERT_NE(at, std::string::npos) << r.output;
+    const std::string error = r.output.substr(at);
+    ASSERT_NE(error.find("(diRenzoDiMaio on) reached an overlap of"), std::string::npos) << error;
+    const double overlap = numberAfter(error, "an overlap of ")*R;
+    const double G = E/(2*(1 + nu));
+    const double Gstar = 1/(2*(2 - nu)/G);
+    const double k = 2.0/3.0*8*Gstar*std::sqrt(R*overlap);
+    const double halfPeriod = pi*std::sqrt(2.0/7.0*mass(R)/k);
+    std::cout << "Di Renzo-Di Maio wall: stopped at overlap " << overlap << " m, k_t " << k
+              << " N/m, half-period " << halfPeriod << " s, dt " << dt << " s" << std::endl;
+    // the overlap is printed to 6 digits: k to about 1e-6
+    EXPECT_NEAR(numberAfter(error, "tangential stiffness is "), k, 1e-5*k) << error;
+    EXPECT_NEAR(numberAfter(error, "half-period of that spring, "), halfPeriod, 1e-5*halfPeriod) << error;
+    EXPECT_NEAR(numberAfter(error, "use a time step of "), 0.05*halfPeriod, 1e-5*halfPeriod) << error;
+    EXPECT_GT(dt, 0.05*halfPeriod);
 }

@@ -1169,6 +1169,18 @@ void Foam::demCoupling::write
                 << particleSteps_/total/Pstream::nProcs()
                 << " particle-steps per second per rank" << endl;
         }
+        if (dem.nFixesOfStyle("colloid/implicit") > 0)
+        {
+            // the plugin's statistics since it was set up (global vector;
+            // the time is the master's)
+            Info<< "Implicit update of lubrication and drag: "
+                << dem.sumFixVector("colloid/implicit", 1)
+                << " conjugate-gradient iterations per DEM step on average,"
+                << " at most " << dem.sumFixVector("colloid/implicit", 2)
+                << ", not converged " << dem.sumFixVector("colloid/implicit", 3)
+                << "; " << dem.sumFixVector("colloid/implicit", 4) << " s"
+                << endl;
+        }
     }
     catch (const std::exception& e)
     {

@@ -1,0 +1,16 @@
+# The tangential contact spring (Walton-Braun, Di Renzo-Di Maio) against
+# the closed-form oscillation of a sphere held on a wall:
+# tangentialSpringTest.cpp
+add_executable(tangentialSpringTests
+    ${CMAKE_CURRENT_LIST_DIR}/liggghtsRun.cpp
+    ${CMAKE_CURRENT_LIST_DIR}/tangentialSpringTest.cpp)
+target_include_directories(tangentialSpringTests PRIVATE ${LIGGGHTS_INCLUDE_DIR})
+target_link_libraries(tangentialSpringTests PRIVATE liggghtsColloid GTest::gtest GTest::gtest_main)
+
+foreach(name tangentialSpringWaltonBraun tangentialSpringDiRenzoDiMaio)
+    add_test(NAME dem.${name} COMMAND tangentialSpringTests --gtest_filter=*.${name})
+    set_tests_properties(dem.${name} PROPERTIES
+        TIMEOUT 60 LABELS "dem;stiff"
+        PASS_REGULAR_EXPRESSION "\\[  PASSED  \\] 1 test\\."
+        WORKING_DIRECTORY ${CMAKE_CURRENT_BINARY_DIR})
+endforeach()
