@@ -32,6 +32,11 @@ const char fixStyle[] = "colloid/implicit";
 const double tolerance = 1e-10;
 const int maxIterations = 200;
 
+// groups of up to this many particles are solved directly (dense Cholesky
+// of at most 12 x 12), larger ones by conjugate gradients (cheaper there:
+// a few iterations against (3n)^3/6 operations)
+const int maxDense = 4;
+
 // Weight of the end-of-step velocity in the drag K (u_f - v): 1/2, the
 // trapezoidal rule, second order for the particle's relaxation (backward
 // Euler lags it: 1 % at t = tau_S with dt = tau_S/27) and A-stable; the
@@ -51,18 +56,18 @@ void addOuter(double *b, double w, const double *n)
     b[5] += w*n[1]*n[2];
 }
 
-// the block replaced by its inverse (positive definite: mass > 0)
-void invert(double *b)
+// B = the inverse of the block A (positive definite: mass > 0)
+void invert(const double *A, double *B)
 {
-    const double xx = b[0], yy = b[1], zz = b[2], xy = b[3], xz = b[4], yz = b[5];
+    const double xx = A[0], yy = A[1], zz = A[2], xy = A[3], xz = A[4], yz = A[5];
     const double cxx = yy*zz - yz*yz, cxy = xz*yz - xy*zz, cxz = xy*yz - xz*yy;
-    const double det = xx*cxx + xy*cxy + xz*cxz;
-    b[0] = cxx/det;
-    b[1] = (xx*zz - xz*xz)/det;
-    b[2] = (xx*yy - xy*xy)/det;
-    b[3] = cxy/det;
-    b[4] = cxz/det;
-    b[5] = (xy*xz - xx*yz)/det;
+    const double inv = 1/(xx*cxx + xy*cxy + xz*cxz);
+    B[0] = cxx*inv;
+    B[1] = (xx*zz - xz*xz)*inv;
+    B[2] = (xx*yy - xy*xy)*inv;
+    B[3] = cxy*inv;
+    B[4] = cxz*inv;
+    B[5] = (xy*xz - xx*yz)*inv;
 }
 
 void applyBlock(const double *b, const double *r, double *z)
@@ -125,6 +130,7 @@ FixColloidImplicit *FixColloidImplicit::attach(LAMMPS *lmp)
 FixColloidImplicit::FixColloidImplicit(LAMMPS *lmp, int narg, char **arg)
 : Fix(lmp, narg, arg),
   collecting_(false),
+  h_(0.0),
   Ksl_(NULL),
   uf_(NULL),
   dragforce_(NULL),
@@ -234,37 +240,233 @@ void FixColloidImplicit::addWall(int i, double c, const double *n, const double 
 
 /* ---------------------------------------------------------------------- */
 
-double FixColloidImplicit::dot(const double *a, const double *b, int n) const
-{
-    double local = 0.0, global = 0.0;
-    for (int k = 0; k < n; k++) local += a[k]*b[k];
-    MPI_Allreduce(&local, &global, 1, MPI_DOUBLE, MPI_SUM, world);
-    return global;
-}
-
-// q = (M + h R) p on the local atoms; p holds the ghosts' values too
-void FixColloidImplicit::multiply(double h, const double *p, double *q) const
+// q = (M + h R) p on the members, from the diagonal blocks and the
+// pairs' coupling -h c n n^T; p holds the ghosts' values too
+void FixColloidImplicit::multiply(const std::vector<int> & members, const std::vector<int> & pairs,
+                                  const double *p, double *q) const
 {
     const int nlocal = atom->nlocal;
-    const double *m = atom->rmass;
-    const double *K = Ksl_ ? Ksl_->vector_atom : NULL;
-    for (int i = 0; i < nlocal; i++)
+    for (int i : members) applyBlock(&blockA_[6*i], &p[3*i], &q[3*i]);
+    for (int at : pairs)
     {
-        const double d = m[i] + (K ? dragWeight*h*K[i] : 0.0);
-        for (int k = 0; k < 3; k++) q[3*i + k] = d*p[3*i + k];
+        const PairTerm & t = pairs_[at];
+        const double ci = t.c*dot3(t.n, &p[3*t.j]), cj = t.c*dot3(t.n, &p[3*t.i]);
+        for (int k = 0; k < 3; k++) q[3*t.i + k] -= h_*ci*t.n[k];
+        if (t.j < nlocal)
+            for (int k = 0; k < 3; k++) q[3*t.j + k] -= h_*cj*t.n[k];
     }
+}
+
+double FixColloidImplicit::dot(const std::vector<int> & members, const double *a, const double *b,
+                               bool global) const
+{
+    double local = 0.0, sum = 0.0;
+    for (int i : members) local += dot3(&a[3*i], &b[3*i]);
+    if (!global) return local;
+    MPI_Allreduce(&local, &sum, 1, MPI_DOUBLE, MPI_SUM, world);
+    return sum;
+}
+
+// Preconditioned conjugate gradients on the members' part of
+// (M + h R) x = r (x starting at 0); global: the members of all ranks
+// together (every rank calls it), else this rank's group alone. Returns
+// the number of iterations.
+int FixColloidImplicit::conjugateGradients(const std::vector<int> & members,
+                                           const std::vector<int> & pairs, bool global)
+{
+    for (int i : members)
+    {
+        applyBlock(&blockInv_[6*i], &r_[3*i], &z_[3*i]);
+        for (int k = 0; k < 3; k++) p_[3*i + k] = z_[3*i + k];
+    }
+    double rz = dot(members, r_.data(), z_.data(), global);
+    const double rz0 = rz;
+    int iterations = 0;
+    while (rz > tolerance*tolerance*rz0 && iterations < maxIterations)
+    {
+        if (global) comm->forward_comm_fix(this);
+        multiply(members, pairs, p_.data(), q_.data());
+        const double alpha = rz/dot(members, p_.data(), q_.data(), global);
+        for (int i : members)
+        {
+            for (int k = 3*i; k < 3*i + 3; k++)
+            {
+                x_[k] += alpha*p_[k];
+                r_[k] -= alpha*q_[k];
+            }
+            applyBlock(&blockInv_[6*i], &r_[3*i], &z_[3*i]);
+        }
+        const double rzNew = dot(members, r_.data(), z_.data(), global);
+        const double beta = rzNew/rz;
+        rz = rzNew;
+        for (int i : members)
+            for (int k = 3*i; k < 3*i + 3; k++) p_[k] = z_[k] + beta*p_[k];
+        iterations++;
+    }
+    if (!(rz <= tolerance*tolerance*rz0) && nNotConverged_++ == 0)
+    {
+        char msg[512];
+        std::snprintf(msg, sizeof(msg),
+            "colloid/implicit: the implicit update of lubrication and drag "
+            "did not converge in %d iterations at step " BIGINT_FORMAT
+            " (relative residual %g, wanted %g); the step is taken with it",
+            maxIterations, update->ntimestep, std::sqrt(rz/rz0), tolerance);
+        error->warning(FLERR, msg);
+    }
+    return iterations;
+}
+
+// Groups of the coupled particles (coupled_: with a pair or wall term)
+// by union-find over the pairs: a group with a pair across the rank's
+// boundary (ghost partner) joins the one global solve; every other group
+// is solved on its own, without communication, in as many iterations as
+// it needs (an isolated pair: one to three), and a particle with walls
+// only directly by its block.
+void FixColloidImplicit::findGroups()
+{
+    const int nlocal = atom->nlocal;
+    parent_.resize(nlocal);
+    for (int i : coupled_) parent_[i] = i;
+    auto root = [&](int i)
+    {
+        while (parent_[i] != i) i = parent_[i] = parent_[parent_[i]];
+        return i;
+    };
+    groupBoundary_.assign(nlocal, 0);
     for (const PairTerm & t : pairs_)
     {
-        const double rel = h*t.c*(dot3(t.n, &p[3*t.i]) - dot3(t.n, &p[3*t.j]));
-        for (int k = 0; k < 3; k++) q[3*t.i + k] += rel*t.n[k];
-        if (t.j < nlocal)
-            for (int k = 0; k < 3; k++) q[3*t.j + k] -= rel*t.n[k];
+        if (t.j >= nlocal) { groupBoundary_[t.i] = 1; continue; }
+        const int a = root(t.i), b = root(t.j);
+        if (a != b) parent_[std::max(a, b)] = std::min(a, b);
     }
-    for (const WallTerm & t : walls_)
+    for (int i : coupled_)
     {
-        const double rel = h*t.c*dot3(t.n, &p[3*t.i]);
-        for (int k = 0; k < 3; k++) q[3*t.i + k] += rel*t.n[k];
+        parent_[i] = root(i);
+        if (groupBoundary_[i]) groupBoundary_[parent_[i]] = 1;
     }
+
+    // members and pairs of each group, sorted by the group's root
+    groupStart_.assign(nlocal + 1, 0);
+    pairStart_.assign(nlocal + 1, 0);
+    for (int i : coupled_) groupStart_[parent_[i] + 1]++;
+    for (const PairTerm & t : pairs_) pairStart_[parent_[t.i] + 1]++;
+    for (int i = 0; i < nlocal; i++)
+    {
+        groupStart_[i + 1] += groupStart_[i];
+        pairStart_[i + 1] += pairStart_[i];
+    }
+    groupMembers_.resize(coupled_.size());
+    groupPairs_.resize(pairs_.size());
+    fill_.assign(groupStart_.begin(), groupStart_.end() - 1);
+    for (int i : coupled_) groupMembers_[fill_[parent_[i]]++] = i;
+    fill_.assign(pairStart_.begin(), pairStart_.end() - 1);
+    for (std::size_t at = 0; at < pairs_.size(); at++) groupPairs_[fill_[parent_[pairs_[at].i]]++] = at;
+
+    boundaryMembers_.clear();
+    boundaryPairs_.clear();
+    for (int i : coupled_)
+    {
+        if (parent_[i] != i || !groupBoundary_[i]) continue;
+        boundaryMembers_.insert(boundaryMembers_.end(), &groupMembers_[groupStart_[i]], &groupMembers_[groupStart_[i + 1]]);
+        boundaryPairs_.insert(boundaryPairs_.end(), groupPairs_.begin() + pairStart_[i], groupPairs_.begin() + pairStart_[i + 1]);
+    }
+}
+
+// An isolated pair (the commonest group) directly: with w = h c and the
+// blocks' inverses Bi, Bj,
+//   x_j = Bj (r_j + w n (n.x_i)),
+//   (A_i - g n n^T) x_i = r_i + w n (n.Bj r_j),  g = w^2 n.Bj n,
+// the latter by Sherman-Morrison on Bi. A particle without integrator has
+// Bi = 0, so x = 0 there.
+void FixColloidImplicit::solvePair(const PairTerm & t)
+{
+    const double *Bi = &blockInv_[6*t.i], *Bj = &blockInv_[6*t.j];
+    const double w = h_*t.c;
+    double yj[3], u[3], rhs[3], a[3], b[3];
+    applyBlock(Bj, &r_[3*t.j], yj);
+    applyBlock(Bj, t.n, u);
+    const double g = w*w*dot3(t.n, u), ny = dot3(t.n, yj);
+    for (int k = 0; k < 3; k++) rhs[k] = r_[3*t.i + k] + w*ny*t.n[k];
+    applyBlock(Bi, rhs, a);
+    applyBlock(Bi, t.n, b);
+    const double factor = g*dot3(t.n, a)/(1 - g*dot3(t.n, b));
+    double *xi = &x_[3*t.i], *xj = &x_[3*t.j];
+    for (int k = 0; k < 3; k++) xi[k] = a[k] + factor*b[k];
+    const double nx = dot3(t.n, xi);
+    for (int k = 0; k < 3; k++) xj[k] = yj[k] + w*nx*u[k];
+}
+
+// A small group directly: its dense matrix (M + h R) by Cholesky. A
+// particle without integrator keeps x = 0 (its row and column are those
+// of the identity, its right-hand side 0).
+void FixColloidImplicit::solveDense(const int *members, int n, const int *pairIdx, int nPairs)
+{
+    const int N = 3*n;
+    const int *mask = atom->mask;
+    dense_.assign(N*N, 0.0);
+    rhs_.resize(N);
+    for (int a = 0; a < n; a++)
+    {
+        const int i = members[a];
+        slot_[i] = a;
+        const double *A = &blockA_[6*i];
+        const double block[3][3] = {{A[0], A[3], A[4]}, {A[3], A[1], A[5]}, {A[4], A[5], A[2]}};
+        for (int k = 0; k < 3; k++)
+        {
+            for (int l = 0; l < 3; l++) dense_[(3*a + k)*N + 3*a + l] = block[k][l];
+            rhs_[3*a + k] = r_[3*i + k];
+        }
+    }
+    for (int q = 0; q < nPairs; q++)
+    {
+        const PairTerm & t = pairs_[pairIdx[q]];
+        const int a = slot_[t.i], b = slot_[t.j];
+        const double w = h_*t.c;
+        for (int k = 0; k < 3; k++)
+            for (int l = 0; l < 3; l++)
+            {
+                dense_[(3*a + k)*N + 3*b + l] -= w*t.n[k]*t.n[l];
+                dense_[(3*b + k)*N + 3*a + l] -= w*t.n[k]*t.n[l];
+            }
+    }
+    for (int a = 0; a < n; a++)
+    {
+        if (mask[members[a]] & integrated_) continue;
+        for (int k = 3*a; k < 3*a + 3; k++)
+        {
+            for (int l = 0; l < N; l++) dense_[k*N + l] = dense_[l*N + k] = 0.0;
+            dense_[k*N + k] = 1.0;
+            rhs_[k] = 0.0;
+        }
+    }
+    // Cholesky, lower triangle in place, then the two triangular solves
+    for (int j = 0; j < N; j++)
+    {
+        double d = dense_[j*N + j];
+        for (int k = 0; k < j; k++) d -= dense_[j*N + k]*dense_[j*N + k];
+        d = std::sqrt(d);
+        dense_[j*N + j] = d;
+        for (int i = j + 1; i < N; i++)
+        {
+            double e = dense_[i*N + j];
+            for (int k = 0; k < j; k++) e -= dense_[i*N + k]*dense_[j*N + k];
+            dense_[i*N + j] = e/d;
+        }
+    }
+    for (int i = 0; i < N; i++)
+    {
+        double e = rhs_[i];
+        for (int k = 0; k < i; k++) e -= dense_[i*N + k]*rhs_[k];
+        rhs_[i] = e/dense_[i*N + i];
+    }
+    for (int i = N - 1; i >= 0; i--)
+    {
+        double e = rhs_[i];
+        for (int k = i + 1; k < N; k++) e -= dense_[k*N + i]*rhs_[k];
+        rhs_[i] = e/dense_[i*N + i];
+    }
+    for (int a = 0; a < n; a++)
+        for (int k = 0; k < 3; k++) x_[3*members[a] + k] = rhs_[3*a + k];
 }
 
 void FixColloidImplicit::solve(double h, bool accumulateImpulse)
@@ -285,99 +487,134 @@ void FixColloidImplicit::solveSystem(double h, bool accumulateImpulse)
     MPI_Allreduce(local, any, 2, MPI_INT, MPI_MAX, world);
     if (!any[0] && !Ksl_) return;
 
-    const int n = 3*nlocal;
+    h_ = h;
     double **v = atom->v;
     double **f = atom->f;
     const double *m = atom->rmass;
     const double *K = Ksl_ ? Ksl_->vector_atom : NULL;
     double **uf = uf_ ? uf_->array_atom : NULL;
     double **fd = dragforce_ ? dragforce_->array_atom : NULL;
+    double **impulse = (accumulateImpulse && impulse_ && K) ? impulse_->array_atom : NULL;
 
-    x_.assign(n, 0.0);
-    r_.resize(n);
-    z_.resize(n);
-    q_.resize(n);
+    // the particles with a pair or wall term
+    isCoupled_.assign(nlocal, 0);
+    for (const PairTerm & t : pairs_)
+    {
+        isCoupled_[t.i] = 1;
+        if (t.j < nlocal) isCoupled_[t.j] = 1;
+    }
+    for (const WallTerm & t : walls_) isCoupled_[t.i] = 1;
+    coupled_.clear();
+
+    // every other particle alone: (m + h K/2) x = h (f + K (u_f - v) + F);
+    // without an integrator it keeps v and feels the drag at v
+    for (int i = 0; i < nlocal; i++)
+    {
+        if (isCoupled_[i])
+        {
+            coupled_.push_back(i);
+            continue;
+        }
+        const double Ki = K ? K[i] : 0.0;
+        if (Ki == 0.0 && !fd) continue;     // no damping: f stays
+        const bool moves = mask[i] & integrated_;
+        const double scale = moves ? m[i]/(m[i] + dragWeight*h*Ki) : 1.0;
+        for (int k = 0; k < 3; k++)
+        {
+            const double F = f[i][k] + Ki*(K ? uf[i][k] - v[i][k] : 0.0) + (fd ? fd[i][k] : 0.0);
+            f[i][k] = scale*F;
+            // x = h F/m' : the drag with the trapezoidal weight
+            if (impulse) impulse[i][k] += h*Ki*(uf[i][k] - v[i][k] - (moves ? dragWeight*h*F/(m[i] + dragWeight*h*Ki) : 0.0));
+        }
+    }
+
+    x_.resize(3*nlocal);
+    r_.resize(3*nlocal);
+    z_.resize(3*nlocal);
+    q_.resize(3*nlocal);
     p_.resize(3*(atom->nmax > 0 ? atom->nmax : 1));
-    block_.assign(6*nlocal, 0.0);
+    blockA_.resize(6*nlocal);
+    blockInv_.resize(6*nlocal);
 
     // residual of the start value x = v' - v = 0: h times the force of
     // the step with every damping term at the current velocities
-    for (int i = 0; i < nlocal; i++)
+    for (int i : coupled_)
     {
         const double Ki = K ? K[i] : 0.0;
         const double d = m[i] + dragWeight*h*Ki;
-        block_[6*i] = block_[6*i + 1] = block_[6*i + 2] = d;
+        double *A = &blockA_[6*i];
+        A[0] = A[1] = A[2] = d;
+        A[3] = A[4] = A[5] = 0.0;
         for (int k = 0; k < 3; k++)
         {
             double F = f[i][k];
             if (K) F += Ki*(uf[i][k] - v[i][k]);
             if (fd) F += fd[i][k];
             r_[3*i + k] = h*F;
+            x_[3*i + k] = 0.0;
         }
     }
     for (const PairTerm & t : pairs_)
     {
         const double rel = h*t.c*(dot3(t.n, v[t.i]) - dot3(t.n, v[t.j]));
-        addOuter(&block_[6*t.i], h*t.c, t.n);
+        addOuter(&blockA_[6*t.i], h*t.c, t.n);
         for (int k = 0; k < 3; k++) r_[3*t.i + k] -= rel*t.n[k];
         if (t.j < nlocal)
         {
-            addOuter(&block_[6*t.j], h*t.c, t.n);
+            addOuter(&blockA_[6*t.j], h*t.c, t.n);
             for (int k = 0; k < 3; k++) r_[3*t.j + k] += rel*t.n[k];
         }
     }
     for (const WallTerm & t : walls_)
     {
         const double rel = h*t.c*(dot3(t.n, v[t.i]) - dot3(t.n, t.vWall));
-        addOuter(&block_[6*t.i], h*t.c, t.n);
+        addOuter(&blockA_[6*t.i], h*t.c, t.n);
         for (int k = 0; k < 3; k++) r_[3*t.i + k] -= rel*t.n[k];
     }
-    for (int i = 0; i < nlocal; i++) invert(&block_[6*i]);
     // a particle without integrator keeps its velocity (x_i = 0); its
     // force is that of its start residual with its neighbours' new
     // velocities (below)
+    for (int i : coupled_)
+    {
+        double *B = &blockInv_[6*i];
+        if (mask[i] & integrated_) invert(&blockA_[6*i], B);
+        else for (int k = 0; k < 6; k++) B[k] = 0.0;
+    }
     if (any[1]) r0_ = r_;
-    for (int i = 0; i < nlocal; i++)
-        if (!(mask[i] & integrated_))
-            for (int k = 0; k < 6; k++) block_[6*i + k] = 0.0;
 
-    // preconditioned conjugate gradients on (M + h R) x = r
-    for (int i = 0; i < nlocal; i++) applyBlock(&block_[6*i], &r_[3*i], &z_[3*i]);
-    double rz = dot(r_.data(), z_.data(), n);
-    const double rz0 = rz;
-    for (int k = 0; k < n; k++) p_[k] = z_[k];
+    findGroups();
+    slot_.resize(nlocal);
     int iterations = 0;
-    while (rz > tolerance*tolerance*rz0 && iterations < maxIterations)
+    std::vector<int> & members = groupScratch_;
+    std::vector<int> & pairs = pairScratch_;
+    for (int g : coupled_)
     {
-        comm->forward_comm_fix(this);
-        multiply(h, p_.data(), q_.data());
-        const double alpha = rz/dot(p_.data(), q_.data(), n);
-        for (int k = 0; k < n; k++)
+        if (parent_[g] != g || groupBoundary_[g]) continue;
+        if (pairStart_[g + 1] == pairStart_[g])
         {
-            x_[k] += alpha*p_[k];
-            r_[k] -= alpha*q_[k];
+            // walls only: the block is the whole system
+            applyBlock(&blockInv_[6*g], &r_[3*g], &x_[3*g]);
+            continue;
         }
-        for (int i = 0; i < nlocal; i++) applyBlock(&block_[6*i], &r_[3*i], &z_[3*i]);
-        const double rzNew = dot(r_.data(), z_.data(), n);
-        const double beta = rzNew/rz;
-        rz = rzNew;
-        for (int k = 0; k < n; k++) p_[k] = z_[k] + beta*p_[k];
-        iterations++;
-    }
-    if (!(rz <= tolerance*tolerance*rz0))
-    {
-        const double residual = std::sqrt(rz/rz0);
-        if (nNotConverged_++ == 0 && comm->me == 0)
+        if (groupStart_[g + 1] - groupStart_[g] == 2 && pairStart_[g + 1] - pairStart_[g] == 1)
         {
-            char msg[512];
-            std::snprintf(msg, sizeof(msg),
-                "colloid/implicit: the implicit update of lubrication and drag "
-                "did not converge in %d iterations at step " BIGINT_FORMAT
-                " (relative residual %g, wanted %g); the step is taken with it",
-                maxIterations, update->ntimestep, residual, tolerance);
-            error->warning(FLERR, msg);
+            solvePair(pairs_[groupPairs_[pairStart_[g]]]);
+            iterations = std::max(iterations, 1);
+            continue;
         }
+        const int size = groupStart_[g + 1] - groupStart_[g];
+        if (size <= maxDense)
+        {
+            solveDense(&groupMembers_[groupStart_[g]], size,
+                       &groupPairs_[pairStart_[g]], pairStart_[g + 1] - pairStart_[g]);
+            iterations = std::max(iterations, 1);
+            continue;
+        }
+        members.assign(&groupMembers_[groupStart_[g]], &groupMembers_[groupStart_[g + 1]]);
+        pairs.assign(groupPairs_.begin() + pairStart_[g], groupPairs_.begin() + pairStart_[g + 1]);
+        iterations = std::max(iterations, conjugateGradients(members, pairs, false));
     }
+    iterations = std::max(iterations, conjugateGradients(boundaryMembers_, boundaryPairs_, true));
     nSolves_++;
     nIterations_ += iterations;
     maxIterations_ = std::max(maxIterations_, iterations);
@@ -385,21 +622,24 @@ void FixColloidImplicit::solveSystem(double h, bool accumulateImpulse)
     // forces on the particles without integrator: r0 - (M + h R) x there
     if (any[1])
     {
-        for (int k = 0; k < n; k++) p_[k] = x_[k];
+        std::vector<int> allPairs(pairs_.size());
+        for (std::size_t at = 0; at < pairs_.size(); at++) allPairs[at] = at;
+        for (int i : coupled_)
+            for (int k = 0; k < 3; k++) p_[3*i + k] = x_[3*i + k];
         comm->forward_comm_fix(this);
-        multiply(h, p_.data(), q_.data());
-        for (int i = 0; i < nlocal; i++)
+        multiply(coupled_, allPairs, p_.data(), q_.data());
+        for (int i : coupled_)
             if (!(mask[i] & integrated_))
                 for (int k = 0; k < 3; k++) f[i][k] = (r0_[3*i + k] - q_[3*i + k])/h;
     }
 
     // the force whose kick of h gives v' = v + x; the drag impulse the
     // coupling hands to the fluid
-    double **impulse = (accumulateImpulse && impulse_ && K) ? impulse_->array_atom : NULL;
-    for (int i = 0; i < nlocal; i++)
+    const double mOverH = 1.0/h;
+    for (int i : coupled_)
         for (int k = 0; k < 3; k++)
         {
-            if (mask[i] & integrated_) f[i][k] = m[i]*x_[3*i + k]/h;
+            if (mask[i] & integrated_) f[i][k] = m[i]*x_[3*i + k]*mOverH;
             if (impulse) impulse[i][k] += h*K[i]*(uf[i][k] - (v[i][k] + dragWeight*x_[3*i + k]));
         }
 }
@@ -425,6 +665,11 @@ double FixColloidImplicit::memory_usage()
 {
     return sizeof(PairTerm)*pairs_.capacity() + sizeof(WallTerm)*walls_.capacity()
          + sizeof(double)*(x_.capacity() + r_.capacity() + z_.capacity()
-                           + p_.capacity() + q_.capacity() + block_.capacity()
-                           + r0_.capacity());
+                           + p_.capacity() + q_.capacity() + blockA_.capacity()
+                           + blockInv_.capacity() + r0_.capacity())
+         + sizeof(int)*(parent_.capacity() + groupStart_.capacity() + pairStart_.capacity()
+                        + groupMembers_.capacity() + groupPairs_.capacity() + fill_.capacity()
+                        + boundaryMembers_.capacity() + boundaryPairs_.capacity()
+                        + coupled_.capacity() + groupScratch_.capacity() + pairScratch_.capacity())
+         + isCoupled_.capacity() + groupBoundary_.capacity();
 }

@@ -24,12 +24,20 @@
    The drag takes the trapezoidal rule instead, K (u_f - (v + v')/2):
    second order for a particle's relaxation, A-stable, still exact in
    force balance; the matrix then has K/2 on its diagonal.
-   The system is solved by conjugate gradients preconditioned with each
-   particle's own 3x3 block (M + dt R)_ii, to a relative residual of
-   1e-10 in the preconditioned norm; an isolated pair takes two or three
-   iterations. Ghost atoms' search directions come by forward
-   communication, so the solve is the same serial and parallel (newton off:
-   a pair across a processor boundary is on both ranks' lists).
+   A particle without pair or wall terms is updated alone (a scalar
+   division by m + dt K/2). Particles coupled by pairs form groups
+   (union-find). A particle with walls only is solved directly by its own
+   3x3 block (M + dt R)_ii, an isolated pair directly (Sherman-Morrison),
+   a group of up to 4 particles directly (dense Cholesky), every larger
+   group
+   that lies within the rank by conjugate gradients preconditioned with
+   those blocks, on its own and in as many iterations as it needs (an
+   isolated pair: one to three); the groups with a partner on another rank
+   (or a periodic image) together, in one global solve whose ghost search
+   directions come by forward communication. Every solve stops at a
+   relative residual of 1e-10 in the preconditioned norm. The result is
+   the same serial and parallel (newton off: a pair across a processor
+   boundary is on both ranks' lists).
 
    Particles that no fix integrates (e.g. a fixed bed) keep their
    velocity: they enter the system like walls, and their force is the
@@ -114,8 +122,13 @@ private:
     void solve(double h, bool accumulateImpulse);
     void solveSystem(double h, bool accumulateImpulse);
     void findDragProperties();
-    void multiply(double h, const double *p, double *q) const;
-    double dot(const double *a, const double *b, int n) const;
+    void findGroups();
+    void solvePair(const PairTerm & t);
+    void solveDense(const int *members, int n, const int *pairIdx, int nPairs);
+    int conjugateGradients(const std::vector<int> & members, const std::vector<int> & pairs, bool global);
+    void multiply(const std::vector<int> & members, const std::vector<int> & pairs,
+                  const double *p, double *q) const;
+    double dot(const std::vector<int> & members, const double *a, const double *b, bool global) const;
 
     std::vector<PairTerm> pairs_;
     std::vector<WallTerm> walls_;
@@ -131,8 +144,30 @@ private:
     // group bits of the time-integrated particles (the unknowns)
     int integrated_;
 
-    // work arrays, 3 per atom (p includes ghosts)
-    std::vector<double> x_, r_, z_, p_, q_, block_, r0_;
+    // step of the current solve [run units]
+    double h_;
+
+    // work arrays, 3 per atom (p includes ghosts); the matrix's diagonal
+    // blocks and their inverses, 6 per atom
+    std::vector<double> x_, r_, z_, p_, q_, r0_, blockA_, blockInv_;
+
+    // groups of coupled particles: root of each atom, members and pairs
+    // (indices into pairs_) sorted by root with their starts, the groups
+    // with a ghost partner, and those of the global solve
+    std::vector<int> parent_, groupStart_, pairStart_, groupMembers_, groupPairs_, fill_;
+    std::vector<char> groupBoundary_;
+    std::vector<int> boundaryMembers_, boundaryPairs_;
+
+    // the particles with a pair or wall term (the others are updated
+    // alone, without blocks), as a flag per atom and a list
+    std::vector<char> isCoupled_;
+    std::vector<int> coupled_;
+    std::vector<int> groupScratch_, pairScratch_;
+
+    // dense solve of a small group: matrix, right-hand side, and each
+    // member's place in it
+    std::vector<double> dense_, rhs_;
+    std::vector<int> slot_;
 
     // statistics of the run
     long nSolves_;

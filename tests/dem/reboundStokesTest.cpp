@@ -78,6 +78,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdlib>
 #include <cstdio>
 #include <sstream>
 #include <string>
@@ -201,7 +202,10 @@ Outcome simulate(double St, bool meshWall)
     // run units: um, us, pg; velocity m/s, viscosity mPa s, stiffness nN/um
     const double R = radius/um;
     const double mu = viscosity(St)*1e3;
-    const double dt = contactTime()/us/100;
+    // 100 steps per contact; COLLOID_REBOUND_STEPS overrides it for the
+    // error-against-step measurement (benchmarks, closing notes)
+    const char* steps = std::getenv("COLLOID_REBOUND_STEPS");
+    const double dt = contactTime()/us/(steps ? std::atof(steps) : 100);
     const double range = hOut/um;
 
     LiggghtsRun run;
