@@ -6,7 +6,8 @@ add_executable(stiffTests
 target_include_directories(stiffTests PRIVATE ${LIGGGHTS_INCLUDE_DIR})
 target_link_libraries(stiffTests PRIVATE liggghtsColloid GTest::gtest GTest::gtest_main)
 
-foreach(name lubricatedCluster13 lubricatedBlock108OnWall vdwCluster13 vdwBlock108OnWall
+foreach(name lubricatedCluster13 lubricatedClusterAcrossPeriodicFace lubricatedSmallGroups
+        lubricatedBlock108OnWall vdwCluster13 vdwBlock108OnWall
         compressedRandomPacking pinnedBetweenWalls approachAtStokesTime
         dragRelaxation movingWallLubrication)
     add_test(NAME dem.stiff.${name} COMMAND stiffTests --gtest_filter=stiff.${name})

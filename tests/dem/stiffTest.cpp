@@ -23,7 +23,10 @@
     Cases: 13-particle FCC cluster; 108-particle FCC block on a primitive
     wall; a jittered dense FCC packing compressed between a primitive
     floor and a descending mesh wall (lubrication with the moving wall);
-    one particle pinned between two primitive walls 1 nm from each.
+    one particle pinned between two primitive walls 1 nm from each; the
+    13-particle cluster across a periodic face (the global solve with
+    ghost partners); separate pairs, chains and a tetrahedron (the direct
+    solves of small groups).
 
     approachAtStokesTime: two spheres (R = 0.5 um) released at rest 50 nm
     apart close to 5 nm under van der Waals (A = 1e-20 J), lubrication and
@@ -78,6 +81,7 @@ struct Scene
     double ceiling = NAN;           // primitive wall z = ceiling above them
     double meshCeiling = NAN;       // mesh wall starting at this z ...
     double meshSpeed = 0;           // ... moving down at this speed [um/us]
+    std::string boundary = "f f f"; // LIGGGHTS boundary flags
 };
 
 // contact (Walton-Braun K1, e = 0.5, friction 0.3) and the liquid's
@@ -142,7 +146,7 @@ std::string input(const Scene& s, double dt, bool check)
     const std::string cohesion = s.vanDerWaals ? "colloid/vdw/lub" : "colloid/lub";
     std::ostringstream in;
     in.precision(17);
-    in << LiggghtsRun::header(2.5) << contactAndLiquid()
+    in << LiggghtsRun::header(2.5, s.boundary) << contactAndLiquid()
        << "fix l2 all property/global lubricationInnerCutoff scalar " << hIn << "\n"
           "fix l3 all property/global lubricationOuterCutoff scalar " << hOut << "\n";
     if (s.vanDerWaals)
@@ -225,8 +229,14 @@ State measure(const LiggghtsRun& run, const Scene& s, double t)
     {
         for (int j = i + 1; j < n; j++)
         {
-            const double dx = x[i][0] - x[j][0], dy = x[i][1] - x[j][1], dz = x[i][2] - x[j][2];
-            surface(std::sqrt(dx*dx + dy*dy + dz*dz) - 2*R);
+            double d[3];
+            for (int k = 0; k < 3; k++)
+            {
+                d[k] = x[i][k] - x[j][k];
+                // nearest periodic image in x and y (box 5 um)
+                if (k < 2 && s.boundary[2*k] == 'p') d[k] -= 5.0*std::round(d[k]/5.0);
+            }
+            surface(std::sqrt(d[0]*d[0] + d[1]*d[1] + d[2]*d[2]) - 2*R);
         }
         if (s.floor) surface(x[i][2] - R);
         if (!std::isnan(s.ceiling)) surface(s.ceiling - x[i][2] - R);
@@ -305,6 +315,44 @@ TEST(stiff, lubricatedCluster13)
 {
     Scene s;
     s.centres = cluster13();
+    stiffCase(s, 200);
+}
+
+TEST(stiff, lubricatedClusterAcrossPeriodicFace)
+{
+    // the cluster straddles the periodic face x = +-2.5 um: its pairs
+    // with periodic images go to the global solve (ghost partners)
+    Scene s;
+    s.centres = cluster13();
+    for (Point& c : s.centres)
+    {
+        c[0] += 2.5;
+        if (c[0] >= 2.5) c[0] -= 5.0;
+    }
+    s.boundary = "p p f";
+    stiffCase(s, 200);
+}
+
+TEST(stiff, lubricatedSmallGroups)
+{
+    // separate pairs, chains of 3 and 4 and a tetrahedron at the inner
+    // cut-off (the direct solves), 0.5 um apart from each other
+    const double a = 2*R + hIn;
+    Scene s;
+    for (int g = 0; g < 4; g++)
+    {
+        const double x0 = -1.8 + 1.2*g;
+        const int length = 2 + g;
+        if (g < 3)
+            for (int k = 0; k < length; k++) s.centres.push_back({x0, -1.5 + k*a, 0});
+        else
+        {
+            s.centres.push_back({x0, 0, 0});
+            s.centres.push_back({x0 + a, 0, 0});
+            s.centres.push_back({x0 + a/2, a*std::sqrt(3.0)/2, 0});
+            s.centres.push_back({x0 + a/2, a*std::sqrt(3.0)/6, a*std::sqrt(2.0/3.0)});
+        }
+    }
     stiffCase(s, 200);
 }
 
