@@ -476,10 +476,11 @@ void FixColloidImplicit::solve(double h, bool accumulateImpulse)
     seconds_ += MPI_Wtime() - start;
 }
 
+// the drag properties were found at init (the fix is always created
+// before Modify's init); their arrays are read here, as they move
 void FixColloidImplicit::solveSystem(double h, bool accumulateImpulse)
 {
     collecting_ = false;
-    findDragProperties();
     const int nlocal = atom->nlocal;
     const int *mask = atom->mask;
     int local[2] = {!pairs_.empty() || !walls_.empty(), 0}, any[2] = {0, 0};

@@ -50,6 +50,22 @@ const double h0 = 0.4e-9;       // m, default inner cut-off
 
 double mass(double R) { return 4.0/3.0*pi*R*R*R*rho; }
 
+// units, box (10 um, two atom types: particles and walls), neighbours
+std::string boxHeader()
+{
+    return
+        "units micro\n"
+        "atom_style granular\n"
+        "atom_modify map array\n"
+        "boundary f f f\n"
+        "newton off\n"
+        "communicate single vel yes\n"
+        "region box block -5 5 -5 5 -5 5 units box\n"
+        "create_box 2 box\n"
+        "neighbor 0.1 bin\n"
+        "neigh_modify delay 0\n";
+}
+
 // two particles of radius R [m] 20 nm apart (van der Waals only, run
 // units micro), K1 [nN/um] for particles (types 1-1) and walls (1-2), a
 // primitive wall 1.5 um below them (its cohesion model: wallCohesion)
@@ -66,17 +82,8 @@ std::string pairScript
 {
     std::ostringstream s;
     s.precision(17);
-    s << "units micro\n"
-         "atom_style granular\n"
-         "atom_modify map array\n"
-         "boundary f f f\n"
-         "newton off\n"
-         "communicate single vel yes\n"
-         "region box block -5 5 -5 5 -5 5 units box\n"
-         "create_box 2 box\n"
-         "neighbor 0.1 bin\n"
-         "neigh_modify delay 0\n"
-         "fix m1 all property/global loadingStiffness peratomtypepair 2 "
+    s << boxHeader()
+      << "fix m1 all property/global loadingStiffness peratomtypepair 2 "
       << K1 << ' ' << K1wall << ' ' << K1wall << ' ' << K1wall << "\n"
          "fix m2 all property/global coefficientRestitution peratomtypepair 2 0.5 0.5 0.5 0.5\n"
          "fix m3 all property/global coefficientFriction peratomtypepair 2 0.3 0.3 0.3 0.3\n"
@@ -296,17 +303,8 @@ TEST(startupLimit, startupLimitDiRenzoDiMaioWall)
     stl.close();
     std::ostringstream s;
     s.precision(17);
-    s << "units micro\n"
-         "atom_style granular\n"
-         "atom_modify map array\n"
-         "boundary f f f\n"
-         "newton off\n"
-         "communicate single vel yes\n"
-         "region box block -5 5 -5 5 -5 5 units box\n"
-         "create_box 2 box\n"
-         "neighbor 0.1 bin\n"
-         "neigh_modify delay 0\n"
-         "fix m1 all property/global loadingStiffness peratomtypepair 2 100 100 100 100\n"
+    s << boxHeader()
+      << "fix m1 all property/global loadingStiffness peratomtypepair 2 100 100 100 100\n"
          "fix m2 all property/global coefficientRestitution peratomtypepair 2 0.5 0.5 0.5 0.5\n"
          "fix m3 all property/global coefficientFriction peratomtypepair 2 0.3 0.3 0.3 0.3\n"
          "fix m4 all property/global tangentialStiffness peratomtypepair 2 100 100 100 100\n"
