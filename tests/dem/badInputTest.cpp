@@ -42,17 +42,7 @@ Properties validProperties()
 // two particles 30 nm apart, all colloid terms on, 10 steps
 std::string script(const Properties& properties)
 {
-    std::string s =
-        "units micro\n"
-        "atom_style granular\n"
-        "atom_modify map array\n"
-        "boundary f f f\n"
-        "newton off\n"
-        "communicate single vel yes\n"
-        "region box block -5 5 -5 5 -5 5 units box\n"
-        "create_box 2 box\n"
-        "neighbor 0.1 bin\n"
-        "neigh_modify delay 0\n";
+    std::string s = boxHeader();
     int n = 0;
     for (const auto& p : properties)
     {

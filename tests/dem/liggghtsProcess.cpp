@@ -33,6 +33,21 @@ ProcessResult runLiggghts(const std::string& name, const std::string& script)
     return result;
 }
 
+std::string boxHeader()
+{
+    return
+        "units micro\n"
+        "atom_style granular\n"
+        "atom_modify map array\n"
+        "boundary f f f\n"
+        "newton off\n"
+        "communicate single vel yes\n"
+        "region box block -5 5 -5 5 -5 5 units box\n"
+        "create_box 2 box\n"
+        "neighbor 0.1 bin\n"
+        "neigh_modify delay 0\n";
+}
+
 double numberAfter(const std::string& text, const std::string& marker)
 {
     const std::size_t at = text.find(marker);

@@ -50,21 +50,6 @@ const double h0 = 0.4e-9;       // m, default inner cut-off
 
 double mass(double R) { return 4.0/3.0*pi*R*R*R*rho; }
 
-// units, box (10 um, two atom types: particles and walls), neighbours
-std::string boxHeader()
-{
-    return
-        "units micro\n"
-        "atom_style granular\n"
-        "atom_modify map array\n"
-        "boundary f f f\n"
-        "newton off\n"
-        "communicate single vel yes\n"
-        "region box block -5 5 -5 5 -5 5 units box\n"
-        "create_box 2 box\n"
-        "neighbor 0.1 bin\n"
-        "neigh_modify delay 0\n";
-}
 
 // two particles of radius R [m] 20 nm apart (van der Waals only, run
 // units micro), K1 [nN/um] for particles (types 1-1) and walls (1-2), a
