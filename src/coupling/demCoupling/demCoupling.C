@@ -702,6 +702,13 @@ Foam::demCoupling::demCoupling
             reportOutsideFluid();
         }
         updateForces();
+
+        // A fresh start's first step sets up with these forces (a resumed
+        // run has the written run's last forces back instead)
+        if (!restart_.resume())
+        {
+            engine_().setUpNextRun();
+        }
     }
     catch (const std::exception& e)
     {

@@ -134,7 +134,8 @@ Foam::liggghtsEngine::liggghtsEngine
 :
     lmp_(nullptr),
     ownsMPI_(false),
-    setUpWithParticles_(false)
+    setUpWithParticles_(false),
+    setUpNext_(false)
 {
     int started = 0;
     MPI_Initialized(&started);
@@ -269,11 +270,18 @@ void Foam::liggghtsEngine::run(long nSteps)
     std::string line = "run " + std::to_string(nSteps);
     if (setUpWithParticles_)
     {
-        line += " pre no post no";
+        line += setUpNext_ ? " pre yes post no" : " pre no post no";
     }
     const bool withParticles = nGlobal() > 0;
     command(line);
     setUpWithParticles_ = setUpWithParticles_ || withParticles;
+    setUpNext_ = false;
+}
+
+
+void Foam::liggghtsEngine::setUpNextRun()
+{
+    setUpNext_ = true;
 }
 
 

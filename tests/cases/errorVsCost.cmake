@@ -1,0 +1,31 @@
+# Error against run time (issue 10): colloidErrorStudy (bin/) and the
+# convergence analysis it uses (src/python/convergence.py).
+#
+# errorVsCost.convergence: Richardson's order, extrapolation and the
+#   asymptotic-range check on ladders with a closed-form answer.
+# errorVsCost.settlingStudy: the tool on the coupled settling particle in
+#   quiescent water over a DEM-step ladder: observed order within 0.2 of
+#   the drag's 2, Richardson's error estimates within a factor 2 of the
+#   true errors against the closed form (checkSettlingStudy.py).
+# errorVsCost.badInput.*: a bad study stops with a message naming the
+#   keyword and the allowed values, a non-zero exit, no output.
+
+set(errorVsCostDir ${CMAKE_CURRENT_SOURCE_DIR}/errorVsCost)
+set(errorVsCostWork ${CMAKE_CURRENT_BINARY_DIR}/errorVsCost)
+
+add_test(NAME errorVsCost.convergence
+    COMMAND python3 ${errorVsCostDir}/testConvergence.py)
+set_tests_properties(errorVsCost.convergence PROPERTIES
+    TIMEOUT 30 LABELS "unit;errorVsCost" ENVIRONMENT PYTHONDONTWRITEBYTECODE=1)
+
+add_test(NAME case.errorVsCost.settlingStudy
+    COMMAND ${errorVsCostDir}/runSettlingStudy.sh ${errorVsCostWork}/settling)
+set_tests_properties(case.errorVsCost.settlingStudy PROPERTIES
+    TIMEOUT 300 LABELS "case;errorVsCost" ENVIRONMENT PYTHONDONTWRITEBYTECODE=1)
+
+foreach(variant shortLadder badLimit missingEntry variableEntry badExpression missingQuantity)
+    add_test(NAME case.errorVsCost.badInput.${variant}
+        COMMAND ${errorVsCostDir}/runStudyBadInput.sh ${variant} ${errorVsCostWork}/badInput_${variant})
+    set_tests_properties(case.errorVsCost.badInput.${variant} PROPERTIES
+        TIMEOUT 30 LABELS "case;errorVsCost" ENVIRONMENT PYTHONDONTWRITEBYTECODE=1)
+endforeach()
