@@ -47,7 +47,8 @@ def _relative(value, base):
 
 
 def analyse(h, q, reference=None):
-    """h, q: the rungs (any order); reference: the closed form or None.
+    """h, q: the rungs (any order); reference: the closed form (one number,
+    or one per rung) or None.
 
     Returns a dict:
       order      observed order (closed form: from the two finest rungs'
@@ -91,9 +92,12 @@ def analyse(h, q, reference=None):
                 result["estimated"][i] = _relative(q[i], extrapolated)
 
     if reference is not None:
+        refs = list(reference) if isinstance(reference, (list, tuple)) else [reference]*len(q)
+        if len(refs) != len(q):
+            raise ValueError("one closed form per rung, or one for all")
         result["source"] = "closed form"
-        result["errors"] = [_relative(x, reference) for x in q]
-        e0, e1 = _relative(qs[0], reference), _relative(qs[1], reference)
+        result["errors"] = [_relative(x, r) for x, r in zip(q, refs)]
+        e0, e1 = result["errors"][rank[0]], result["errors"][rank[1]]
         if e0 > 0 and e1 > 0:
             result["order"] = math.log(e1/e0)/math.log(hs[1]/hs[0])
         return result

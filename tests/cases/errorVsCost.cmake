@@ -29,3 +29,15 @@ foreach(variant shortLadder badLimit missingEntry variableEntry badExpression mi
     set_tests_properties(case.errorVsCost.badInput.${variant} PROPERTIES
         TIMEOUT 30 LABELS "case;errorVsCost" ENVIRONMENT PYTHONDONTWRITEBYTECODE=1)
 endforeach()
+
+# errorVsCost.slotCoaterStudy: the slot-coater tutorial's own study
+#   (tutorials/slotCoater/system/errorStudyDict) at test size to 2 us, for
+#   the DEM step, coupling step, colloid range, cell size and flow
+#   tolerance: every rung runs, the default is on each ladder, and every
+#   quantity the tool calls converging does so monotonically
+#   (checkSlotCoaterStudy.py).
+add_test(NAME case.errorVsCost.slotCoaterStudy
+    COMMAND ${errorVsCostDir}/runSlotCoaterStudy.sh ${errorVsCostWork}/slotCoater 2e-6
+            demTimeStep,couplingStep,colloidRange,cellSize,flowTolerance)
+set_tests_properties(case.errorVsCost.slotCoaterStudy PROPERTIES
+    TIMEOUT 1200 LABELS "case;errorVsCost;slotCoater" ENVIRONMENT PYTHONDONTWRITEBYTECODE=1)
