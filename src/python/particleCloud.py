@@ -6,7 +6,7 @@ reconstructed), ASCII format, with the standard library only.
 A write time is named by its path <case>/<time>; read() returns the
 particles of all processor folders of that time, sorted by particle id:
 position, velocity [m/s], radius [m], id, nContacts, touchingParticle,
-touchingWall."""
+touchingWall, agglomerateSize (1 where the run wrote none)."""
 import glob
 import os
 import re
@@ -88,10 +88,11 @@ def read(path):
         nc = _values(os.path.join(d, "nContacts"), 1)
         tp = _values(os.path.join(d, "touchingParticle"), 1)
         tw = _values(os.path.join(d, "touchingWall"), 1)
+        ag = _values(os.path.join(d, "agglomerateSize"), 1) or [[1]]*len(pos)
         for k in range(len(pos)):
             rows.append((int(ids[k][0]), pos[k][:3], vel[k], 0.5*dia[k][0],
-                         int(nc[k][0]), int(tp[k][0]), int(tw[k][0])))
+                         int(nc[k][0]), int(tp[k][0]), int(tw[k][0]), int(ag[k][0])))
     rows.sort(key=lambda row: row[0])
     keys = ["id", "position", "velocity", "radius", "nContacts",
-            "touchingParticle", "touchingWall"]
+            "touchingParticle", "touchingWall", "agglomerateSize"]
     return {key: [row[j] for row in rows] for j, key in enumerate(keys)}

@@ -72,7 +72,11 @@ Foam::couplingProperties::couplingProperties(const objectRegistry& obr)
     epsilonMin_(1),
     kernelRadius_(0),
     selfInducedVelocity_(false),
-    clipFluidFraction_(false)
+    clipFluidFraction_(false),
+    contactAnalysis_(false),
+    contactInterval_(1),
+    touchingGap_(0.01),
+    agglomerateGap_(0.01)
 {
     const dictionary& dict = *this;
 
@@ -212,13 +216,41 @@ Foam::couplingProperties::couplingProperties(const objectRegistry& obr)
     demScreen_ = dem.getOrDefault<bool>("screen", false);
     allowLostParticles_ = dem.getOrDefault<bool>("allowLostParticles", false);
 
+    // Contacts and agglomerates: gaps as fractions of the smaller radius
+    contactAnalysis_ = dict.found("contactAnalysis");
+    if (contactAnalysis_)
+    {
+        const dictionary& ca = requiredSubDict(dict, "contactAnalysis");
+        contactInterval_ = ca.getOrDefault<label>("interval", 1);
+        if (contactInterval_ < 1)
+        {
+            FatalIOErrorInFunction(ca)
+                << "Keyword 'interval' in " << ca.name() << " is "
+                << contactInterval_ << "; allowed range: integer >= 1"
+                << " (coupling steps between analyses)" << exit(FatalIOError);
+        }
+        for (const word key : {"touchingGap", "agglomerateGap"})
+        {
+            const scalar gap = ca.getOrDefault<scalar>(key, 0.01);
+            if (!(gap >= 0 && gap < 1))
+            {
+                FatalIOErrorInFunction(ca)
+                    << "Keyword '" << key << "' in " << ca.name() << " is "
+                    << gap << "; allowed range: [0, 1) (a gap as a"
+                    << " fraction of the smaller radius)" << exit(FatalIOError);
+            }
+            (key == "touchingGap" ? touchingGap_ : agglomerateGap_) = gap;
+        }
+        keywordCheck(ca, {"interval", "touchingGap", "agglomerateGap"}, true);
+    }
+
     // Misspelt keywords: the sub-dictionaries hold only these settings;
     // the top level may also hold a case's #included parameters
     keywordCheck
     (
         dict,
         {"couplingMode", "dragModel", "forceModels", "twoWay", "fluid",
-         "particles", "DEM"},
+         "particles", "DEM", "contactAnalysis"},
         false
     );
     if (twoWay_)

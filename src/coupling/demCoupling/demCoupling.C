@@ -266,11 +266,41 @@ void Foam::demCoupling::startDEM()
         checkInitialOverlaps(dem, props_.demScript());
     }
 
+    // Before the first run: the analysis adds a per-atom property
+    if (props_.contactAnalysis())
+    {
+        contacts_.reset(new contactAnalysis(props_, dem, mesh_.time()));
+    }
+
     // Full set-up (neighbour lists, initial insertion) without moving
     dem.run(0);
 
     // Resuming: the script read the state; the last step's force back
     nInserted_ = restart_.restored(dem, props_.demScript());
+}
+
+
+void Foam::demCoupling::analyseContacts()
+{
+    if (!contacts_.valid() || analysedAt_ == mesh_.time().timeIndex())
+    {
+        return;
+    }
+    pointField position;
+    labelList proc, cell;
+    scalarField wallDist;
+    locateLocal(props_.touchingGap(), position, proc, cell, wallDist);
+
+    const double* r = engine_().radius();
+    labelList touchingWall(position.size(), 0);
+    forAll(touchingWall, i)
+    {
+        const scalar radius = demUnits::length*r[i];
+        touchingWall[i] =
+            wallDist[i] <= (1 + props_.touchingGap())*radius ? 1 : 0;
+    }
+    contacts_->analyse(engine_(), mesh_.time().value(), touchingWall);
+    analysedAt_ = mesh_.time().timeIndex();
 }
 
 
@@ -332,7 +362,7 @@ void Foam::demCoupling::countNewParticles()
 
 void Foam::demCoupling::locateLocal
 (
-    const bool wantWallDistance,
+    const scalar wallRange,
     pointField& position,
     labelList& proc,
     labelList& cell,
@@ -380,9 +410,9 @@ void Foam::demCoupling::locateLocal
         position[i] = demUnits::length*point(xi[0], xi[1], xi[2]);
         prevProc[i] = label(hint[i][0]);
         prevCell[i] = label(hint[i][1]);
-        if (wantWallDistance)
+        if (wallRange > 0)
         {
-            maxWallDist[i] = (1 + touchTolerance_)*demUnits::length*r[i];
+            maxWallDist[i] = (1 + wallRange)*demUnits::length*r[i];
         }
     }
 
@@ -492,7 +522,7 @@ void Foam::demCoupling::gatherRecords()
     pointField position;
     labelList cell;
     scalarField wallDist;
-    locateLocal(false, position, proc_, cell, wallDist);
+    locateLocal(0, position, proc_, cell, wallDist);
 
     liggghtsEngine& dem = engine_();
     const int n = dem.nLocal();
@@ -629,6 +659,8 @@ Foam::demCoupling::demCoupling
     proc_(),
     engine_(),
     restart_(U.mesh()),
+    nCouplingSteps_(0),
+    analysedAt_(-1),
     nInserted_(0),
     demSeconds_(0),
     couplingSeconds_(0),
@@ -702,6 +734,7 @@ Foam::demCoupling::demCoupling
             reportOutsideFluid();
         }
         updateForces();
+        analyseContacts();
 
         // A fresh start's first step sets up with these forces (a resumed
         // run has the written run's last forces back instead)
@@ -1004,6 +1037,12 @@ void Foam::demCoupling::evolve()
 
         gatherRecords();
 
+        ++nCouplingSteps_;
+        if (contacts_.valid() && nCouplingSteps_ % contacts_->interval() == 0)
+        {
+            analyseContacts();
+        }
+
         couplingSeconds_ += clock.timeIncrement();
     }
     catch (const std::exception& e)
@@ -1061,10 +1100,13 @@ void Foam::demCoupling::write
     {
         countNewParticles();
 
+        // Every write has its analysis (the particles' agglomerate sizes)
+        analyseContacts();
+
         pointField position;
         labelList proc, cell;
         scalarField wallDist;
-        locateLocal(true, position, proc, cell, wallDist);
+        locateLocal(touchTolerance_, position, proc, cell, wallDist);
 
         liggghtsEngine& dem = engine_();
         const int n = dem.nLocal();
@@ -1084,6 +1126,8 @@ void Foam::demCoupling::write
         out.diameter.setSize(n);
         out.nContacts.setSize(n);
         out.touchingWall.setSize(n);
+        out.agglomerateSize =
+            contacts_.valid() ? contacts_->agglomerateSize(n) : labelList(n, 1);
         for (int i = 0; i < n; ++i)
         {
             const scalar radius = demUnits::length*r[i];
@@ -1133,6 +1177,10 @@ void Foam::demCoupling::write
             << ", removed " << nRemoved << "; written " << nWritten
             << " (lagrangian/" << cloudName_ << "), "
             << nPresent - nWritten << " outside the fluid" << endl;
+        if (contacts_.valid())
+        {
+            Info<< "Contacts: " << contacts_->summary().c_str() << endl;
+        }
 
         if (nPresent != nInserted_ - nRemoved)
         {

@@ -150,8 +150,10 @@ void Foam::checkInitialOverlaps
         }
     }
 
-    // Candidates in cells of one largest diameter
-    const scalar h = 2*rMax;
+    // Candidates in cells of one largest diameter and a radius: every pair
+    // with a gap below one largest radius is found (the smallest gap of
+    // the report), and every overlapping one
+    const scalar h = 3*rMax;
     auto cellOf = [&](const point& p)
     {
         return FixedList<label, 3>
@@ -168,8 +170,10 @@ void Foam::checkInitialOverlaps
         grid(cellOf(candidates.x[j])).append(j);
     }
 
-    // Each pair once: from the particle with the lower id, where it lives
+    // Each pair once: from the particle with the lower id, where it lives;
+    // the smallest gap [DEM length] of this rank and its pair
     DynamicList<overlapPair> pairs;
+    FixedList<scalar, 4> smallest({GREAT, -1, -1, 0});
     forAll(local.x, i)
     {
         const FixedList<label, 3> c = cellOf(local.x[i]);
@@ -191,6 +195,11 @@ void Foam::checkInitialOverlaps
                 }
                 const scalar dist = mag(candidates.x[j] - local.x[i]);
                 const scalar rMin = min(local.r[i], candidates.r[j]);
+                const scalar gap = dist - local.r[i] - candidates.r[j];
+                if (gap < smallest[0])
+                {
+                    smallest = {gap, scalar(local.id[i]), scalar(candidates.id[j]), rMin};
+                }
                 const scalar fraction =
                     (local.r[i] + candidates.r[j] - dist)/rMin;
                 if (fraction > warnFraction)
@@ -202,6 +211,35 @@ void Foam::checkInitialOverlaps
                     });
                 }
             }
+        }
+    }
+
+    // The smallest gap of all ranks, in the log (seed 000's fill has no
+    // contacts by construction: a fill should leave a stated gap)
+    List<FixedList<scalar, 4>> each(Pstream::nProcs());
+    each[Pstream::myProcNo()] = smallest;
+    Pstream::gatherList(each);
+    if (Pstream::master())
+    {
+        for (const FixedList<scalar, 4>& s : each)
+        {
+            if (s[0] < smallest[0])
+            {
+                smallest = s;
+            }
+        }
+        if (smallest[0] < rMax)
+        {
+            Info<< "Initial particles: smallest gap "
+                << demUnits::length*smallest[0] << " m ("
+                << 100*smallest[0]/smallest[3] << " % of the smaller radius),"
+                << " between particles " << label(smallest[1]) << " and "
+                << label(smallest[2]) << endl;
+        }
+        else
+        {
+            Info<< "Initial particles: no two closer than one largest radius"
+                << " (gap " << demUnits::length*rMax << " m)" << endl;
         }
     }
 

@@ -18,6 +18,7 @@
 #include <liggghts/fix.h>
 #include <liggghts/compute.h>
 #include "liggghtsColloid/register_colloid_models.h"
+#include "liggghtsColloid/colloid_contact_analysis_api.h"
 
 #include <cstdio>
 #include <cstdlib>
@@ -337,6 +338,30 @@ void Foam::liggghtsEngine::implicitDamping()
     liggghtsCall call;
     registerColloidModels();
     colloidImplicitUpdate(lmp_);
+}
+
+
+void* Foam::liggghtsEngine::newContactAnalysis
+(
+    double touchingGap,
+    double agglomerateGap
+)
+{
+    liggghtsCall call;
+    return colloidContactAnalysisNew(lmp_, touchingGap, agglomerateGap);
+}
+
+
+void Foam::liggghtsEngine::analyseContacts
+(
+    void* analysis,
+    double t,
+    const int* touchingWall,
+    ColloidContactCounts* counts
+)
+{
+    liggghtsCall call;
+    colloidContactAnalyse(analysis, t, touchingWall, counts);
 }
 
 

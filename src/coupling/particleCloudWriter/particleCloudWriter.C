@@ -63,18 +63,18 @@ Foam::label Foam::particleCloudWriter::write
     }
 
     // The particles of this rank's cells
-    DynamicList<label> cell, id, nContacts, touchingWall;
+    DynamicList<label> cell, id, nContacts, touchingWall, agglomerateSize;
     DynamicList<point> position;
     DynamicList<vector> velocity;
     DynamicList<scalar> diameter;
 
     auto receive = [&](Istream& is)
     {
-        labelList c, i, nc, tw;
+        labelList c, i, nc, tw, as;
         pointField x;
         vectorField v;
         scalarField d;
-        is >> c >> i >> x >> v >> d >> nc >> tw;
+        is >> c >> i >> x >> v >> d >> nc >> tw >> as;
         append(cell, c);
         append(id, i);
         append(position, x);
@@ -82,6 +82,7 @@ Foam::label Foam::particleCloudWriter::write
         append(diameter, d);
         append(nContacts, nc);
         append(touchingWall, tw);
+        append(agglomerateSize, as);
     };
 
     if (!Pstream::parRun())
@@ -94,6 +95,7 @@ Foam::label Foam::particleCloudWriter::write
         append(diameter, listPick(local.diameter, idx));
         append(nContacts, listPick(local.nContacts, idx));
         append(touchingWall, listPick(local.touchingWall, idx));
+        append(agglomerateSize, listPick(local.agglomerateSize, idx));
     }
     else
     {
@@ -108,7 +110,8 @@ Foam::label Foam::particleCloudWriter::write
                     << listPick(local.position, idx) << listPick(local.velocity, idx)
                     << listPick(local.diameter, idx)
                     << listPick(local.nContacts, idx)
-                    << listPick(local.touchingWall, idx);
+                    << listPick(local.touchingWall, idx)
+                    << listPick(local.agglomerateSize, idx);
             }
         }
         labelList sizes;
@@ -155,7 +158,8 @@ Foam::label Foam::particleCloudWriter::write
              && writeField<scalar>(cloud, "d", diameter)
              && writeField<label>(cloud, "nContacts", nContacts)
              && writeField<label>(cloud, "touchingParticle", touchingParticle)
-             && writeField<label>(cloud, "touchingWall", touchingWall);
+             && writeField<label>(cloud, "touchingWall", touchingWall)
+             && writeField<label>(cloud, "agglomerateSize", agglomerateSize);
         },
         error
     );

@@ -1,0 +1,418 @@
+/* ----------------------------------------------------------------------
+   colloidFoam LIGGGHTS plugin: contacts and agglomerates, see
+   colloid_contact_analysis.h.
+------------------------------------------------------------------------- */
+
+#include "colloid_contact_analysis.h"
+#include "colloid_contact_analysis_api.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <mpi.h>
+#include <unordered_set>
+#include "atom.h"
+#include "comm.h"
+#include "error.h"
+#include "fix_property_atom.h"
+#include "force.h"
+#include "input.h"
+#include "modify.h"
+#include "neigh_list.h"
+#include "pair.h"
+
+using namespace LAMMPS_NS;
+
+namespace {
+
+const char labelFix[] = "colloidAgglomerate";
+
+uint64_t pairKey(int a, int b)
+{
+    const uint64_t lo = static_cast<uint32_t>(std::min(a, b));
+    const uint64_t hi = static_cast<uint32_t>(std::max(a, b));
+    return (lo << 32) | hi;
+}
+
+// splitmix64: spreads consecutive ids evenly over the ranks
+uint64_t mix(uint64_t z)
+{
+    z += 0x9e3779b97f4a7c15ULL;
+    z = (z ^ (z >> 30))*0xbf58476d1ce4e5b9ULL;
+    z = (z ^ (z >> 27))*0x94d049bb133111ebULL;
+    return z ^ (z >> 31);
+}
+
+// Every rank sends out[r] to rank r; returns what it received, with the
+// sending rank of each block of 'width' values in from
+std::vector<uint64_t> exchange(MPI_Comm world, const std::vector<std::vector<uint64_t>> &out,
+                               int width, std::vector<int> *from = NULL)
+{
+    const int nprocs = static_cast<int>(out.size());
+    std::vector<int> sendCounts(nprocs), recvCounts(nprocs), sendDispl(nprocs), recvDispl(nprocs);
+    std::vector<uint64_t> sendBuf;
+    for (int p = 0; p < nprocs; p++)
+    {
+        sendCounts[p] = static_cast<int>(out[p].size());
+        sendDispl[p] = static_cast<int>(sendBuf.size());
+        sendBuf.insert(sendBuf.end(), out[p].begin(), out[p].end());
+    }
+    MPI_Alltoall(sendCounts.data(), 1, MPI_INT, recvCounts.data(), 1, MPI_INT, world);
+    int total = 0;
+    for (int p = 0; p < nprocs; p++)
+    {
+        recvDispl[p] = total;
+        total += recvCounts[p];
+    }
+    std::vector<uint64_t> in(total);
+    MPI_Alltoallv(sendBuf.data(), sendCounts.data(), sendDispl.data(), MPI_UINT64_T,
+                  in.data(), recvCounts.data(), recvDispl.data(), MPI_UINT64_T, world);
+    if (from)
+    {
+        from->clear();
+        for (int p = 0; p < nprocs; p++)
+            for (int k = 0; k < recvCounts[p]/width; k++) from->push_back(p);
+    }
+    return in;
+}
+
+// the values of every rank, on rank 0
+template<class T>
+std::vector<T> gatherOnZero(MPI_Comm world, const std::vector<T> &mine, MPI_Datatype type)
+{
+    int nprocs, me;
+    MPI_Comm_size(world, &nprocs);
+    MPI_Comm_rank(world, &me);
+    const int n = static_cast<int>(mine.size());
+    std::vector<int> counts(nprocs), displ(nprocs);
+    MPI_Gather(&n, 1, MPI_INT, counts.data(), 1, MPI_INT, 0, world);
+    int total = 0;
+    for (int p = 0; p < nprocs; p++)
+    {
+        displ[p] = total;
+        total += counts[p];
+    }
+    std::vector<T> all(me == 0 ? total : 0);
+    MPI_Gatherv(mine.data(), n, type, all.data(), counts.data(), displ.data(), type, 0, world);
+    return all;
+}
+
+long sumOnZero(MPI_Comm world, long mine)
+{
+    long sum = 0;
+    MPI_Reduce(&mine, &sum, 1, MPI_LONG, MPI_SUM, 0, world);
+    return sum;
+}
+
+}
+
+/* ---------------------------------------------------------------------- */
+
+ColloidContactAnalysis::ColloidContactAnalysis(LAMMPS *lmp, const Settings &settings)
+:
+    Pointers(lmp),
+    settings_(settings),
+    first_(true),
+    labels_(NULL)
+{
+    if (!(settings.touchingGap >= 0) || !(settings.agglomerateGap >= 0))
+        error->all(FLERR, "colloid contact analysis: the touching and agglomerate gaps must be >= 0");
+    if (modify->find_fix(labelFix) < 0)
+    {
+        // scalar, not in restart files, forwarded to ghosts, no reverse comm
+        char line[128];
+        snprintf(line, sizeof(line), "fix %s all property/atom %s scalar no yes no -1", labelFix, labelFix);
+        input->one(line);
+    }
+    labels_ = static_cast<FixPropertyAtom *>(
+        modify->find_fix_property(labelFix, "property/atom", "scalar", 0, 0, "colloid contact analysis"));
+}
+
+/* ---------------------------------------------------------------------- */
+
+int ColloidContactAnalysis::owner(uint64_t key) const
+{
+    return static_cast<int>(mix(key) % static_cast<uint64_t>(comm->nprocs));
+}
+
+// The keys sent to their owners: those this rank owns, from every rank
+std::vector<uint64_t> ColloidContactAnalysis::sendToOwners(const std::vector<uint64_t> &keys) const
+{
+    std::vector<std::vector<uint64_t>> out(comm->nprocs);
+    for (uint64_t k : keys) out[owner(k)].push_back(k);
+    return exchange(world, out, 1);
+}
+
+// Contacts now against the histories: formed (new keys), broken (keys no
+// longer there) with the durations of those whose start is known
+void ColloidContactAnalysis::update(std::unordered_map<uint64_t, double> &active,
+                                    const std::vector<uint64_t> &now, double t,
+                                    long &formed, long &broken, std::vector<double> &durations)
+{
+    const std::unordered_set<uint64_t> present(now.begin(), now.end());
+    for (auto it = active.begin(); it != active.end();)
+    {
+        if (present.count(it->first))
+        {
+            ++it;
+            continue;
+        }
+        broken++;
+        if (!std::isnan(it->second)) durations.push_back(t - it->second);
+        it = active.erase(it);
+    }
+    for (uint64_t k : present)
+    {
+        if (active.count(k)) continue;
+        active[k] = first_ ? std::numeric_limits<double>::quiet_NaN() : t;
+        if (!first_) formed++;
+    }
+}
+
+/* ---------------------------------------------------------------------- */
+
+ColloidContactAnalysis::Result ColloidContactAnalysis::analyse(double t, const int *touchingWall)
+{
+    NeighList *list = force->pair ? force->pair->list : NULL;
+    if (!list)
+        error->all(FLERR, "colloid contact analysis: needs a pair style with a neighbour list "
+                          "(pair_style gran ...), set up by a run");
+
+    const int nlocal = atom->nlocal;
+    double **x = atom->x;
+    const double *r = atom->radius;
+    const int *tag = atom->tag;
+
+    contacts_.assign(nlocal, 0);
+    bonds_.clear();
+    std::vector<uint64_t> pairKeys, wallKeys;
+    for (int ii = 0; ii < list->inum; ii++)
+    {
+        const int i = list->ilist[ii];
+        if (i >= nlocal) continue;
+        const int *jlist = list->firstneigh[i];
+        for (int jj = 0; jj < list->numneigh[i]; jj++)
+        {
+            const int j = jlist[jj] & NEIGHMASK;
+            const double dx = x[i][0] - x[j][0], dy = x[i][1] - x[j][1], dz = x[i][2] - x[j][2];
+            const double gap = std::sqrt(dx*dx + dy*dy + dz*dz) - r[i] - r[j];
+            const double rMin = std::min(r[i], r[j]);
+            if (gap < settings_.agglomerateGap*rMin) bonds_.push_back(std::make_pair(i, j));
+            if (gap >= settings_.touchingGap*rMin) continue;
+            contacts_[i]++;
+            if (j < nlocal) contacts_[j]++;
+            // a pair with a ghost is in both ranks' lists: counted by the
+            // atom with the smaller id
+            if (j < nlocal || tag[i] < tag[j]) pairKeys.push_back(pairKey(tag[i], tag[j]));
+        }
+    }
+    if (touchingWall)
+        for (int i = 0; i < nlocal; i++)
+            if (touchingWall[i]) wallKeys.push_back(static_cast<uint64_t>(tag[i]));
+
+    Result result;
+    long pairFormed = 0, pairBroken = 0, wallFormed = 0, wallBroken = 0;
+    std::vector<double> pairDurations, wallDurations;
+    update(pairs_, sendToOwners(pairKeys), t, pairFormed, pairBroken, pairDurations);
+    update(walls_, sendToOwners(wallKeys), t, wallFormed, wallBroken, wallDurations);
+    first_ = false;
+
+    result.particles = sumOnZero(world, nlocal);
+    result.pairContacts = sumOnZero(world, static_cast<long>(pairKeys.size()));
+    result.wallContacts = sumOnZero(world, static_cast<long>(wallKeys.size()));
+    result.pairFormed = sumOnZero(world, pairFormed);
+    result.pairBroken = sumOnZero(world, pairBroken);
+    result.wallFormed = sumOnZero(world, wallFormed);
+    result.wallBroken = sumOnZero(world, wallBroken);
+    result.pairDurations = gatherOnZero(world, pairDurations, MPI_DOUBLE);
+    result.wallDurations = gatherOnZero(world, wallDurations, MPI_DOUBLE);
+
+    int most = 0, mostAll = 0;
+    for (int c : contacts_) most = std::max(most, c);
+    MPI_Allreduce(&most, &mostAll, 1, MPI_INT, MPI_MAX, world);
+    std::vector<long> byContacts(mostAll + 1, 0);
+    for (int c : contacts_) byContacts[c]++;
+    result.byContacts.assign(mostAll + 1, 0);
+    MPI_Reduce(byContacts.data(), result.byContacts.data(), mostAll + 1, MPI_LONG, MPI_SUM, 0, world);
+
+    findAgglomerates(result);
+    return result;
+}
+
+/* ---------------------------------------------------------------------- */
+
+void ColloidContactAnalysis::findAgglomerates(Result &result)
+{
+    const int nlocal = atom->nlocal;
+    const int *tag = atom->tag;
+    double *label = labels_->vector_atom;
+
+    // smallest id over the bonds: locally to a fixed point, then the
+    // ghosts' values forwarded, until no rank changes a value
+    for (int i = 0; i < nlocal; i++) label[i] = tag[i];
+    int changedAnywhere = 1;
+    while (changedAnywhere)
+    {
+        labels_->do_forward_comm();
+        int changed = 0;
+        bool sweep = true;
+        while (sweep)
+        {
+            sweep = false;
+            for (const auto &b : bonds_)
+            {
+                const double m = std::min(label[b.first], label[b.second]);
+                if (label[b.first] > m)
+                {
+                    label[b.first] = m;
+                    sweep = true;
+                }
+                if (b.second < nlocal && label[b.second] > m)
+                {
+                    label[b.second] = m;
+                    sweep = true;
+                }
+            }
+            changed = changed || sweep;
+        }
+        MPI_Allreduce(&changed, &changedAnywhere, 1, MPI_INT, MPI_MAX, world);
+    }
+
+    // sizes: each bonded particle's cluster counted on the rank that owns
+    // the cluster's id, and sent back to the ranks that asked
+    std::vector<char> bonded(nlocal, 0);
+    for (const auto &b : bonds_)
+    {
+        bonded[b.first] = 1;
+        if (b.second < nlocal) bonded[b.second] = 1;
+    }
+    std::map<uint64_t, uint64_t> localCount;
+    for (int i = 0; i < nlocal; i++)
+        if (bonded[i]) localCount[static_cast<uint64_t>(label[i])]++;
+    std::vector<std::vector<uint64_t>> out(comm->nprocs);
+    for (const auto &c : localCount)
+    {
+        std::vector<uint64_t> &o = out[owner(c.first)];
+        o.push_back(c.first);
+        o.push_back(c.second);
+    }
+    std::vector<int> from;
+    const std::vector<uint64_t> in = exchange(world, out, 2, &from);
+    std::map<uint64_t, uint64_t> total;
+    for (size_t k = 0; k < in.size(); k += 2) total[in[k]] += in[k + 1];
+    std::vector<std::vector<uint64_t>> reply(comm->nprocs);
+    for (size_t k = 0; k < in.size(); k += 2)
+    {
+        reply[from[k/2]].push_back(in[k]);
+        reply[from[k/2]].push_back(total[in[k]]);
+    }
+    const std::vector<uint64_t> answer = exchange(world, reply, 2);
+    std::unordered_map<uint64_t, long> sizeOf;
+    for (size_t k = 0; k < answer.size(); k += 2) sizeOf[answer[k]] = static_cast<long>(answer[k + 1]);
+
+    size_.assign(nlocal, 1);
+    label_.resize(nlocal);
+    for (int i = 0; i < nlocal; i++)
+    {
+        label_[i] = static_cast<long>(label[i]);
+        if (bonded[i]) size_[i] = sizeOf[static_cast<uint64_t>(label[i])];
+    }
+
+    // the size distribution, from the owners, on rank 0
+    std::map<long, long> mine;
+    for (const auto &c : total) mine[static_cast<long>(c.second)]++;
+    std::vector<long> flat;
+    for (const auto &c : mine)
+    {
+        flat.push_back(c.first);
+        flat.push_back(c.second);
+    }
+    const std::vector<long> all = gatherOnZero(world, flat, MPI_LONG);
+    for (size_t k = 0; k < all.size(); k += 2)
+    {
+        result.agglomerateSizes[all[k]] += all[k + 1];
+        result.agglomerates += all[k + 1];
+        result.agglomerated += all[k]*all[k + 1];
+        result.largest = std::max(result.largest, all[k]);
+    }
+}
+
+/* ----------------------------------------------------------------------
+   C interface (colloid_contact_analysis_api.h)
+------------------------------------------------------------------------- */
+
+namespace {
+
+struct Handle
+{
+    ColloidContactAnalysis analysis;
+    ColloidContactAnalysis::Result last;
+    std::vector<long> sizePairs;
+    Handle(LAMMPS *lmp, const ColloidContactAnalysis::Settings &s) : analysis(lmp, s) {}
+};
+
+}
+
+void *colloidContactAnalysisNew(void *lmp, double touchingGap, double agglomerateGap)
+{
+    ColloidContactAnalysis::Settings s;
+    s.touchingGap = touchingGap;
+    s.agglomerateGap = agglomerateGap;
+    return new Handle(static_cast<LAMMPS *>(lmp), s);
+}
+
+void colloidContactAnalysisFree(void *analysis)
+{
+    delete static_cast<Handle *>(analysis);
+}
+
+void colloidContactAnalyse(void *analysis, double t, const int *touchingWall,
+                           ColloidContactCounts *counts)
+{
+    Handle &h = *static_cast<Handle *>(analysis);
+    h.last = h.analysis.analyse(t, touchingWall);
+    const ColloidContactAnalysis::Result &r = h.last;
+    h.sizePairs.clear();
+    for (const auto &s : r.agglomerateSizes)
+    {
+        h.sizePairs.push_back(s.first);
+        h.sizePairs.push_back(s.second);
+    }
+    counts->particles = r.particles;
+    counts->pairContacts = r.pairContacts;
+    counts->wallContacts = r.wallContacts;
+    counts->pairFormed = r.pairFormed;
+    counts->pairBroken = r.pairBroken;
+    counts->wallFormed = r.wallFormed;
+    counts->wallBroken = r.wallBroken;
+    counts->agglomerates = r.agglomerates;
+    counts->agglomerated = r.agglomerated;
+    counts->largest = r.largest;
+}
+
+int colloidContactByContacts(void *analysis, const long **values)
+{
+    const Handle &h = *static_cast<Handle *>(analysis);
+    *values = h.last.byContacts.data();
+    return static_cast<int>(h.last.byContacts.size());
+}
+
+int colloidContactDurations(void *analysis, int wall, const double **values)
+{
+    const Handle &h = *static_cast<Handle *>(analysis);
+    const std::vector<double> &d = wall ? h.last.wallDurations : h.last.pairDurations;
+    *values = d.data();
+    return static_cast<int>(d.size());
+}
+
+int colloidContactAgglomerateSizes(void *analysis, const long **sizeCountPairs)
+{
+    const Handle &h = *static_cast<Handle *>(analysis);
+    *sizeCountPairs = h.sizePairs.data();
+    return static_cast<int>(h.sizePairs.size()/2);
+}
+
+const long *colloidContactAgglomerateSize(void *analysis)
+{
+    return static_cast<Handle *>(analysis)->analysis.agglomerateSize().data();
+}

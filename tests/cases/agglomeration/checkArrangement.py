@@ -1,0 +1,71 @@
+#!/usr/bin/env python3
+"""Checks the first analysis of runArrangementTest.sh (the start) against
+the arrangement's contacts and clusters, known by construction
+(writeArrangement.py), and each particle's agglomerateSize in the time-0
+cloud.
+
+usage: checkArrangement.py caseDir serial|parallel"""
+import csv
+import glob
+import os
+import sys
+
+here = os.path.dirname(os.path.abspath(__file__))
+sys.path.insert(0, os.path.join(here, "..", "..", "..", "src", "python"))
+sys.path.insert(0, here)
+import particleCloud  # noqa: E402
+from writeArrangement import GROUPS  # noqa: E402
+
+SIZE = {"chain5": 5, "ring6": 6, "pair": 2, "pairAcrossRanks": 2,
+        "chain3AcrossPeriodic": 3, "loosePair": 2, "isolated": 1, "onWall": 1}
+
+
+def main():
+    case = sys.argv[1]
+    ok = True
+
+    def check(what, got, want):
+        nonlocal ok
+        good = got == want
+        print("%-40s %-20s expected %-20s %s" % (what, got, want, "ok" if good else "FAIL"))
+        ok = ok and good
+
+    files = glob.glob(os.path.join(case, "postProcessing", "contactAnalysis", "*", "contacts.csv"))
+    if len(files) != 1:
+        print("FAIL: expected one contacts.csv, found %s" % files)
+        return 1
+    rows = list(csv.DictReader(l for l in open(files[0]) if not l.startswith("#")))
+    first = rows[0]
+    check("time of the first analysis", float(first["time"]), 0.0)
+    check("particles", int(first["particles"]), 22)
+    check("particle contacts", int(first["pairContacts"]), 14)
+    check("wall contacts", int(first["wallContacts"]), 1)
+    check("formed at the start", int(first["pairFormed"]), 0)
+    check("particles with 0/1/2/3+ contacts",
+          tuple(int(first[k]) for k in ("with0", "with1", "with2", "with3orMore")), (4, 8, 10, 0))
+    check("agglomerates", int(first["agglomerates"]), 6)
+    check("particles in agglomerates", int(first["agglomeratedParticles"]), 20)
+    check("largest agglomerate", int(first["largestAgglomerate"]), 6)
+    sizes = {}
+    for row in csv.DictReader(open(os.path.join(os.path.dirname(files[0]), "agglomerateSizes.csv"))):
+        if float(row["time"]) == 0.0:
+            sizes[int(row["size"])] = int(row["count"])
+    check("agglomerate sizes at the start", sizes, {2: 3, 3: 1, 5: 1, 6: 1})
+
+    # the cloud at time 0: each particle's agglomerate size (ids follow
+    # the creation order of the groups)
+    cloud = particleCloud.read(os.path.join(case, "0"))
+    want = []
+    for name, centres in GROUPS:
+        want += [SIZE[name]]*len(centres)
+    got = dict(zip(cloud["id"], cloud["agglomerateSize"]))
+    check("particles in the cloud", len(got), len(want))
+    wrong = [i for i in range(1, len(want) + 1) if got.get(i) != want[i - 1]]
+    check("particles with a wrong agglomerateSize", wrong, [])
+
+    print("PASS" if ok else "FAIL")
+    return 0 if ok else 1
+
+
+if __name__ == "__main__":
+    sys.exit(main())

@@ -1,0 +1,179 @@
+/*---------------------------------------------------------------------------*\
+    colloidFoam DEM test: the contact and agglomerate analysis
+    (src/liggghtsColloid/colloid_contact_analysis.h) on hand-built
+    arrangements whose contacts and clusters are known by construction,
+    serial (the 2-rank and processor-boundary cases run through the coupled
+    solver: tests/cases/agglomeration).
+
+    Spheres of radius R = 0.5 um; touching below 1 % of R (gap 5 nm),
+    bonded into agglomerates below 5 % (25 nm).
+
+    arrangements: in a box periodic in x,
+      - a chain of 5 at gaps of 2 nm:              4 contacts, cluster 5;
+      - a ring of 6 (hexagon of side 2R + 2 nm):   6 contacts, cluster 6;
+      - two pairs at 2 nm:                         2 contacts, 2 clusters of 2;
+      - a chain of 3 across the periodic face:     2 contacts, cluster 3;
+      - a pair at 10 nm (bonded, not touching):    0 contacts, cluster 2;
+      - two isolated spheres, one flagged as touching a wall.
+    Expected: 14 pair contacts, 1 wall contact; particles with 0, 1, 2
+    contacts: 4, 8, 10; agglomerates {2: 3, 3: 1, 5: 1, 6: 1}, 6 in all,
+    20 particles in them, largest 6; each particle's agglomerate size and
+    id (the smallest atom id of its cluster). At the first analysis no
+    contact counts as formed.
+
+    passingContactDuration: sphere B moves at 1 um/us past sphere A at
+    rest, its path 2R + 2 nm from A's centre; the gap stays below 5 nm for
+    |x| < sqrt((2R + 5 nm)^2 - (2R + 2 nm)^2), a contact of 0.15518 us.
+    Analysed every 1e-3 us: one contact formed and broken, its duration
+    within one analysis interval of the closed form (each end is seen up
+    to one interval late).
+\*---------------------------------------------------------------------------*/
+#include "liggghtsRun.H"
+#include "colloid_contact_analysis.h"
+#include "atom.h"
+
+#include <gtest/gtest.h>
+
+#include <array>
+#include <cmath>
+#include <sstream>
+#include <vector>
+
+using namespace demTest;
+using LAMMPS_NS::ColloidContactAnalysis;
+
+namespace
+{
+
+const double R = 0.5;           // um
+const double touch = 0.002;     // gap of a touching pair, um
+const double loose = 0.010;     // gap of a bonded, not touching pair, um
+
+typedef std::array<double, 3> Point;
+
+std::string materials()
+{
+    return
+        "fix m1 all property/global youngsModulus peratomtype 1e5 1e5\n"
+        "fix m2 all property/global poissonsRatio peratomtype 0.3 0.3\n"
+        "fix m3 all property/global coefficientRestitution peratomtypepair 2 0.5 0.5 0.5 0.5\n"
+        "fix m4 all property/global coefficientFriction peratomtypepair 2 0.3 0.3 0.3 0.3\n"
+        "neighbor 0.1 bin\n"
+        "pair_style gran model hertz tangential history\n"
+        "pair_coeff * *\n"
+        "timestep 1e-4\n";
+}
+
+void createAtoms(LiggghtsRun& run, const std::vector<Point>& centres)
+{
+    std::ostringstream in;
+    in.precision(17);
+    for (const Point& c : centres)
+        in << "create_atoms 1 single " << c[0] << ' ' << c[1] << ' ' << c[2] << " units box\n";
+    in << "set atom * diameter " << 2*R << " density 2.5\n";
+    run.commands(in.str());
+}
+
+ColloidContactAnalysis::Settings settings()
+{
+    ColloidContactAnalysis::Settings s;
+    s.touchingGap = 0.01;
+    s.agglomerateGap = 0.05;
+    return s;
+}
+
+} // namespace
+
+TEST(contactAnalysis, arrangements)
+{
+    const double a = 2*R + touch;
+    std::vector<Point> c;
+    std::vector<int> groupOf;   // the arrangement of each atom (ids 1, 2, ...)
+    auto add = [&](Point p, int g) { c.push_back(p); groupOf.push_back(g); };
+    for (int k = 0; k < 5; k++) add({-6.0 + k*a, -5.0, 0.0}, 0);              // chain of 5
+    for (int k = 0; k < 6; k++)                                                 // ring of 6
+    {
+        const double phi = k*M_PI/3;
+        add({3.0 + a*std::cos(phi), 4.0 + a*std::sin(phi), 0.0}, 1);
+    }
+    add({-6.0, 3.0, 0.0}, 2); add({-6.0 + a, 3.0, 0.0}, 2);                    // pair
+    add({-6.0, 6.0, 0.0}, 3); add({-6.0 + a, 6.0, 0.0}, 3);                    // pair
+    add({10.0 - a/2, 0.0, 5.0}, 4); add({-10.0 + a/2, 0.0, 5.0}, 4);           // across x = +-10
+    add({-10.0 + 1.5*a, 0.0, 5.0}, 4);
+    add({3.0, -5.0, 5.0}, 5); add({3.0 + 2*R + loose, -5.0, 5.0}, 5);           // loose pair
+    add({6.0, 6.0, -5.0}, 6); add({-2.0, -8.0, 6.0}, 7);                         // isolated
+
+    LiggghtsRun run;
+    run.commands(LiggghtsRun::header(10.0, "p f f") + materials());
+    createAtoms(run, c);
+    ColloidContactAnalysis analysis(run.instance(), settings());
+    run.commands("run 0");
+
+    const int n = static_cast<int>(c.size());
+    ASSERT_EQ(run.nAtoms(), n);
+    std::vector<int> wall(n, 0);
+    LAMMPS_NS::LAMMPS* lmp = run.instance();
+    for (int i = 0; i < lmp->atom->nlocal; i++) wall[i] = lmp->atom->tag[i] == n ? 1 : 0;
+    const ColloidContactAnalysis::Result r = analysis.analyse(0.0, wall.data());
+
+    EXPECT_EQ(r.particles, n);
+    EXPECT_EQ(r.pairContacts, 14);
+    EXPECT_EQ(r.wallContacts, 1);
+    EXPECT_EQ(r.pairFormed, 0);
+    EXPECT_EQ(r.wallFormed, 0);
+    ASSERT_EQ(r.byContacts.size(), 3u);
+    EXPECT_EQ(r.byContacts[0], 4);
+    EXPECT_EQ(r.byContacts[1], 8);
+    EXPECT_EQ(r.byContacts[2], 10);
+    EXPECT_EQ(r.agglomerates, 6);
+    EXPECT_EQ(r.agglomerated, 20);
+    EXPECT_EQ(r.largest, 6);
+    const std::map<long, long> sizes = {{2, 3}, {3, 1}, {5, 1}, {6, 1}};
+    EXPECT_EQ(r.agglomerateSizes, sizes);
+
+    // each particle: its arrangement's size, and the arrangement's
+    // smallest id (ids follow the creation order)
+    const long groupSize[] = {5, 6, 2, 2, 3, 2, 1, 1};
+    std::vector<long> firstId(8, 0);
+    for (int id = n; id >= 1; id--) firstId[groupOf[id - 1]] = id;
+    for (int i = 0; i < lmp->atom->nlocal; i++)
+    {
+        const int id = lmp->atom->tag[i];
+        const int g = groupOf[id - 1];
+        EXPECT_EQ(analysis.agglomerateSize()[i], groupSize[g]) << "atom " << id;
+        if (groupSize[g] > 1) EXPECT_EQ(analysis.agglomerateId()[i], firstId[g]) << "atom " << id;
+    }
+}
+
+TEST(contactAnalysis, passingContactDuration)
+{
+    const double v = 1.0;                   // um/us
+    const double offset = 2*R + touch;      // path from A's centre, um
+    const double halfWindow = std::sqrt(std::pow(2*R + 0.01*R, 2) - offset*offset);
+    const double duration = 2*halfWindow/v;
+    const double interval = 1e-3;           // us: 10 steps of 1e-4
+
+    LiggghtsRun run;
+    run.commands(LiggghtsRun::header(5.0) + materials());
+    createAtoms(run, {{0.0, 0.0, 0.0}, {-0.5, offset, 0.0}});
+    run.commands("group mover id 2\nfix move mover move linear 1.0 0 0");
+    ColloidContactAnalysis analysis(run.instance(), settings());
+    run.commands("run 0");
+
+    long formed = 0, broken = 0;
+    std::vector<double> durations;
+    for (int k = 0; k <= 1000; k++)
+    {
+        if (k > 0) run.commands("run 10 pre no post no");
+        const ColloidContactAnalysis::Result r = analysis.analyse(k*interval, nullptr);
+        formed += r.pairFormed;
+        broken += r.pairBroken;
+        durations.insert(durations.end(), r.pairDurations.begin(), r.pairDurations.end());
+        ASSERT_LE(r.pairContacts, 1);
+    }
+    EXPECT_EQ(formed, 1);
+    EXPECT_EQ(broken, 1);
+    ASSERT_EQ(durations.size(), 1u);
+    std::printf("contact duration %.6f us, closed form %.6f us\n", durations[0], duration);
+    EXPECT_NEAR(durations[0], duration, interval);
+}
