@@ -5,7 +5,7 @@ contactDurations.csv, agglomerateSizes.csv.  A resumed run adds a folder
 per start time; they are joined in time order (rows of an earlier run
 after the resumed start are dropped: the resumed run replaces them).
 
-    python3 contactAnalysis.py [caseDir]    summary; contactAnalysis.png
+    colloidContactAnalysis [caseDir]   (bin/) summary; contactAnalysis.png
 
 summary(case) gives the figures over the whole run:
     pairFormedPerUs      particle-particle contacts formed per us
@@ -136,12 +136,19 @@ def plot(case, png):
     fig.savefig(png, dpi=100)
 
 
-if __name__ == "__main__":
-    case = sys.argv[1] if len(sys.argv) > 1 else "."
+def main(case):
+    """Print the summary and write contactAnalysis.png: 0, or 1 when the
+    plot could not be made"""
     for key, value in summary(case).items():
         print("%s %.6g" % (key, value))
     try:
         plot(case, os.path.join(case, "contactAnalysis.png"))
-        print("Written %s" % os.path.join(case, "contactAnalysis.png"))
     except ImportError:
-        print("matplotlib missing (Debian: python3-matplotlib): no plot")
+        sys.stderr.write("matplotlib missing (Debian: python3-matplotlib): no plot\n")
+        return 1
+    print("Written %s" % os.path.join(case, "contactAnalysis.png"))
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main(sys.argv[1] if len(sys.argv) > 1 else "."))

@@ -15,15 +15,18 @@
                             downstream lip (slotWidth < x < slotWidth +
                             downstreamLip, in the gap), averaged over the
                             write times after the start
+  contactsFormedPerUs       particle-particle contacts formed per us over
+                            the run (postProcessing/contactAnalysis)
+  meanContactDuration       mean duration [s] of the particle-particle
+                            contacts that ended (0 if none did)
 
-Not yet here (issue 12's contact analysis): contacts formed per us and
-the mean contact duration.  Run in the case folder, after a run (serial or
-reconstructed parallel)."""
+Run in the case folder, after a run (serial or reconstructed parallel)."""
 import os
 import re
 import sys
 
 sys.path.insert(0, os.path.join(os.environ["COLLOIDFOAM_DIR"], "src", "python"))
+import contactAnalysis  # noqa: E402
 import foamDict  # noqa: E402
 import particleCloud  # noqa: E402
 
@@ -62,3 +65,7 @@ for t in times:
 if not means:
     sys.exit("quantitiesOfInterest: no particle under the downstream lip at any write time")
 print("meanVelocityUnderLip %.12g" % (sum(means)/len(means)))
+
+contacts = contactAnalysis.summary(".")
+print("contactsFormedPerUs %.12g" % contacts["pairFormedPerUs"])
+print("meanContactDuration %.12g" % contacts["meanPairDuration"])

@@ -228,20 +228,28 @@ Foam::label Foam::demRestart::restored
             << exit(FatalError);
     }
 
+    // The feed's release steps too, unless the step changed (then
+    // LIGGGHTS' rescaled ones stand)
+    const scalar dt = dem.timeStepSize()*demUnits::time;
+    restoreLastStep(dem, mag(dt - demTimeStepSize_) <= 1e-6*demTimeStepSize_);
+    return nInserted_;
+}
+
+
+void Foam::demRestart::restoreLastStep
+(
+    liggghtsEngine& dem,
+    const bool releaseSteps
+) const
+{
     // The force and torque of the last step's end, for the first
     // half-step (see the class description)
     const int n = dem.nLocal();
     copyVectors(dem.vectorProperty(forceFix), dem.f(), n);
     copyVectors(dem.vectorProperty(torqueFix), dem.torque(), n);
 
-    // The feed's release steps as they were, unless the step changed
-    // (then LIGGGHTS' rescaled ones stand)
-    const scalar dt = dem.timeStepSize()*demUnits::time;
-    if
-    (
-        dem.hasFix(releaseFix)
-     && mag(dt - demTimeStepSize_) <= 1e-6*demTimeStepSize_
-    )
+    // The feed's release steps as they were
+    if (releaseSteps && dem.hasFix(releaseFix))
     {
         double** release = dem.vectorProperty(releaseFix);
         double* saved = dem.scalarProperty(releaseCopyFix);
@@ -253,7 +261,6 @@ Foam::label Foam::demRestart::restored
             }
         }
     }
-    return nInserted_;
 }
 
 
@@ -318,6 +325,13 @@ Foam::string Foam::demRestart::write
     {
         return problem;
     }
+
+    // write_restart exchanged atoms between ranks (and wrapped periodic
+    // ones) but left the neighbour lists and their reference positions as
+    // they were: set up again, and continue from the last step's forces
+    dem.setUpNextRun();
+    dem.run(0);
+    restoreLastStep(dem, true);
 
     // Every rank's files are complete: replace the time's DEM state
     rmDir(dir);

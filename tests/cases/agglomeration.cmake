@@ -1,0 +1,26 @@
+# Contacts and agglomerates during a coupled run (issue 12): the analysis
+# of colloidDEMFoam (couplingProperties contactAnalysis) on a hand-built
+# arrangement with clusters across the DEM's rank boundary and its
+# periodic face, serial and 2 ranks (runArrangementTest.sh,
+# checkArrangement.py): counts and sizes known by construction.
+set(agglomerationDir ${CMAKE_CURRENT_SOURCE_DIR}/agglomeration)
+set(agglomerationWork ${CMAKE_CURRENT_BINARY_DIR}/agglomeration)
+
+foreach(mode serial parallel)
+    add_test(NAME case.agglomeration.arrangement.${mode}
+        COMMAND ${agglomerationDir}/runArrangementTest.sh ${mode} ${agglomerationWork}/arrangement_${mode})
+    set_tests_properties(case.agglomeration.arrangement.${mode} PROPERTIES
+        TIMEOUT 120 LABELS "case;agglomeration" ENVIRONMENT PYTHONDONTWRITEBYTECODE=1)
+endforeach()
+set_tests_properties(case.agglomeration.arrangement.parallel PROPERTIES PROCESSORS 2)
+
+# agglomeration.slotCoaterSerialVsParallel: the slot-coater tutorial's
+# contact analysis at test size (the fixtures of case.slotCoater.*): both
+# runs write the time series and the plot, the fill has no contact, and
+# serial and 2 ranks agree (compareSlotCoaterContacts.py).
+add_test(NAME case.agglomeration.slotCoaterSerialVsParallel
+    COMMAND python3 ${agglomerationDir}/compareSlotCoaterContacts.py
+            ${CMAKE_CURRENT_BINARY_DIR}/slotCoater/serial ${CMAKE_CURRENT_BINARY_DIR}/slotCoater/parallel)
+set_tests_properties(case.agglomeration.slotCoaterSerialVsParallel PROPERTIES
+    TIMEOUT 30 LABELS "case;agglomeration;slotCoater" ENVIRONMENT PYTHONDONTWRITEBYTECODE=1
+    FIXTURES_REQUIRED "slotCoater_serial;slotCoater_parallel")
