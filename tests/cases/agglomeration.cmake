@@ -24,3 +24,12 @@ add_test(NAME case.agglomeration.slotCoaterSerialVsParallel
 set_tests_properties(case.agglomeration.slotCoaterSerialVsParallel PROPERTIES
     TIMEOUT 30 LABELS "case;agglomeration;slotCoater" ENVIRONMENT PYTHONDONTWRITEBYTECODE=1
     FIXTURES_REQUIRED "slotCoater_serial;slotCoater_parallel")
+
+# agglomeration.shearCollisions: spheres (contact only) following a simple
+# shear collide at Smoluchowski's rate (4/3) G (2a)^3 n^2/2, integrated
+# over the band that holds them, within 3 Poisson standard deviations
+# (runShearTest.sh, checkShearCollisions.py; about 1100 collisions).
+add_test(NAME case.agglomeration.shearCollisions
+    COMMAND ${agglomerationDir}/runShearTest.sh ${agglomerationWork}/shear)
+set_tests_properties(case.agglomeration.shearCollisions PROPERTIES
+    TIMEOUT 600 LABELS "case;agglomeration" ENVIRONMENT PYTHONDONTWRITEBYTECODE=1)
