@@ -9,25 +9,12 @@ import os
 import sys
 
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "coupling"))
-from setPoiseuilleU import read_scalar_list  # noqa: E402
+from setPoiseuilleU import write_profile  # noqa: E402
 
 
 def main():
     case, H, G = sys.argv[1], float(sys.argv[2]), float(sys.argv[3])
-    ys = read_scalar_list(os.path.join(case, "0", "Cy"))
-    with open(os.path.join(case, "0", "U"), "w") as f:
-        f.write("FoamFile { version 2.0; format ascii; class volVectorField;"
-                " location \"0\"; object U; }\n")
-        f.write("dimensions [0 1 -1 0 0 0 0];\n")
-        f.write("internalField nonuniform List<vector> %d\n(\n" % len(ys))
-        for y in ys:
-            f.write("(%.15g 0 0)\n" % (G*(y - 0.5*H)))
-        f.write(");\n")
-        f.write("boundaryField\n{\n"
-                "    walls { type zeroGradient; }\n"
-                "    sides { type zeroGradient; }\n}\n")
-    for name in ("C", "Cx", "Cy", "Cz"):
-        os.remove(os.path.join(case, "0", name))
+    write_profile(case, lambda y: G*(y - 0.5*H), "type zeroGradient;")
 
 
 if __name__ == "__main__":

@@ -24,8 +24,10 @@ def read_scalar_list(path):
     return [float(v) for v in values]
 
 
-def main():
-    case, H, Umax = sys.argv[1], float(sys.argv[2]), float(sys.argv[3])
+def write_profile(case, ux, walls):
+    """0/U with U_x = ux(y) at the cell centres (0/Cy), U_y = U_z = 0,
+    the walls patch as given (a boundaryField entry), zero gradient on the
+    others; the cell-centre files are removed"""
     ys = read_scalar_list(os.path.join(case, "0", "Cy"))
     with open(os.path.join(case, "0", "U"), "w") as f:
         f.write("FoamFile { version 2.0; format ascii; class volVectorField;"
@@ -33,13 +35,19 @@ def main():
         f.write("dimensions [0 1 -1 0 0 0 0];\n")
         f.write("internalField nonuniform List<vector> %d\n(\n" % len(ys))
         for y in ys:
-            f.write("(%.15g 0 0)\n" % (4*Umax*y*(H - y)/H**2))
+            f.write("(%.15g 0 0)\n" % ux(y))
         f.write(");\n")
         f.write("boundaryField\n{\n"
-                "    walls { type fixedValue; value uniform (0 0 0); }\n"
-                "    sides { type zeroGradient; }\n}\n")
+                "    walls { %s }\n"
+                "    sides { type zeroGradient; }\n}\n" % walls)
     for name in ("C", "Cx", "Cy", "Cz"):
         os.remove(os.path.join(case, "0", name))
+
+
+def main():
+    case, H, Umax = sys.argv[1], float(sys.argv[2]), float(sys.argv[3])
+    write_profile(case, lambda y: 4*Umax*y*(H - y)/H**2,
+                  "type fixedValue; value uniform (0 0 0);")
 
 
 if __name__ == "__main__":
