@@ -7,6 +7,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <cstdio>
 #include <cstring>
 #include <mpi.h>
@@ -17,7 +18,9 @@
 #include "memory.h"
 #include "modify.h"
 #include "update.h"
+#include "fix_property_global.h"
 #include "colloid_drag_properties.h"
+#include "colloid_units.h"
 
 using namespace LAMMPS_NS;
 using namespace FixConst;
@@ -136,6 +139,8 @@ FixColloidImplicit::FixColloidImplicit(LAMMPS *lmp, int narg, char **arg)
   dragforce_(NULL),
   impulse_(NULL),
   integrated_(0),
+  kT_(0.0),
+  seed_(0),
   nSolves_(0),
   nIterations_(0),
   maxIterations_(0),
@@ -163,6 +168,7 @@ void FixColloidImplicit::init()
     if (!atom->rmass_flag)
         error->all(FLERR, "colloid/implicit needs per-particle masses (atom_style granular)");
     findDragProperties();
+    findBrownianMotion();
     // the particles whose velocity an integrator updates; the others (a
     // fixed bed, say) keep theirs and act on their neighbours like walls
     integrated_ = 0;
@@ -184,6 +190,81 @@ void FixColloidImplicit::findDragProperties()
     if (Ksl_ && !uf_)
         error->all(FLERR, "colloid/implicit: the per-atom drag coefficient 'Ksl' needs "
                           "the fluid velocity 'uf' (fix property/atom ... uf vector ...)");
+}
+
+// Brownian motion: the random force of the drag's fluctuation-dissipation
+// balance. Over a step h each particle gets the impulse R, each component
+// Gaussian with variance 2 K k_B T h. With the trapezoidal drag of the
+// update, m (w' - w) = -K h (w + w')/2 + R for the half-step velocities w
+// that move the particles, so that, at any step, <w^2> = k_B T/m per
+// component (the stationary variance of the recursion) and the
+// displacement over many steps is the sum of R/K: the diffusion
+// coefficient k_B T/K exactly. The written velocity (mean of two
+// half-step ones) has the variance k_B T/(m (1 + K h/(2 m))). Only the
+// drag's noise: lubrication's thermal forces between close pairs are not
+// modelled.
+void FixColloidImplicit::findBrownianMotion()
+{
+    kT_ = 0.0;
+    Fix *T = modify->find_fix_property("brownianTemperature", "property/global", "scalar", 0, 0, style, false);
+    if (!T) return;
+    const double kelvin = static_cast<FixPropertyGlobal *>(T)->compute_scalar();
+    if (!(kelvin >= 0.0 && kelvin < 1e4))
+    {
+        char msg[256];
+        snprintf(msg, sizeof(msg), "colloid/implicit: property brownianTemperature is %g K; "
+                 "allowed range: 0 (no Brownian motion) to 1e4 K", kelvin);
+        error->all(FLERR, msg);
+    }
+    Fix *S = modify->find_fix_property("brownianSeed", "property/global", "scalar", 0, 0, style, false);
+    const double seed = S ? static_cast<FixPropertyGlobal *>(S)->compute_scalar() : -1.0;
+    if (!(seed >= 1.0 && seed < 4.2e9 && seed == std::floor(seed)))
+    {
+        char msg[256];
+        snprintf(msg, sizeof(msg), "colloid/implicit: Brownian motion (brownianTemperature %g K) "
+                 "needs property brownianSeed, an integer from 1 to 4.2e9 (it is %g)", kelvin, seed);
+        error->all(FLERR, msg);
+    }
+    const double boltzmann = 1.380649e-23;      // J/K
+    kT_ = boltzmann*kelvin/LIGGGHTS::Colloid::MicroUnits::energy;
+    seed_ = static_cast<unsigned long>(seed);
+}
+
+namespace {
+
+uint64_t mix64(uint64_t z)
+{
+    z += 0x9e3779b97f4a7c15ULL;
+    z = (z ^ (z >> 30))*0xbf58476d1ce4e5b9ULL;
+    z = (z ^ (z >> 27))*0x94d049bb133111ebULL;
+    return z ^ (z >> 31);
+}
+
+// a uniform number in (0, 1] from a 64-bit hash
+double unit(uint64_t z)
+{
+    return (static_cast<double>(z >> 11) + 1.0)*(1.0/9007199254740992.0);
+}
+
+}
+
+// The impulse R of atom tag over the step h: from a hash of the seed, the
+// atom's id, the step number and the kind of solve, so that a run gives
+// the same numbers on any number of ranks and after a restart
+void FixColloidImplicit::thermalImpulse(int tag, double K, double h, double *R) const
+{
+    const double sigma = std::sqrt(2.0*K*kT_*h);
+    const uint64_t phase = h < update->dt ? 1 : 0;      // the set-up's half step
+    uint64_t key = mix64(seed_);
+    key = mix64(key ^ static_cast<uint64_t>(tag));
+    key = mix64(key ^ static_cast<uint64_t>(update->ntimestep));
+    key = mix64(key ^ phase);
+    const double twoPi = 6.283185307179586;
+    for (int k = 0; k < 3; k++)
+    {
+        const uint64_t a = mix64(key + 2*k), b = mix64(key + 2*k + 1);
+        R[k] = sigma*std::sqrt(-2.0*std::log(unit(a)))*std::cos(twoPi*unit(b));
+    }
 }
 
 /* ---------------------------------------------------------------------- */
@@ -496,6 +577,8 @@ void FixColloidImplicit::solveSystem(double h, bool accumulateImpulse)
     double **uf = uf_ ? uf_->array_atom : NULL;
     double **fd = dragforce_ ? dragforce_->array_atom : NULL;
     double **impulse = (accumulateImpulse && impulse_ && K) ? impulse_->array_atom : NULL;
+    const int *tag = atom->tag;
+    const bool thermal = kT_ > 0.0 && K;
 
     // the particles with a pair or wall term
     isCoupled_.assign(nlocal, 0);
@@ -520,12 +603,17 @@ void FixColloidImplicit::solveSystem(double h, bool accumulateImpulse)
         if (Ki == 0.0 && !fd) continue;     // no damping: f stays
         const bool moves = mask[i] & integrated_;
         const double scale = moves ? m[i]/(m[i] + dragWeight*h*Ki) : 1.0;
+        double R[3] = {0.0, 0.0, 0.0};
+        if (thermal && moves && Ki > 0.0) thermalImpulse(tag[i], Ki, h, R);
         for (int k = 0; k < 3; k++)
         {
-            const double F = f[i][k] + Ki*(K ? uf[i][k] - v[i][k] : 0.0) + (fd ? fd[i][k] : 0.0);
+            const double F = f[i][k] + Ki*(K ? uf[i][k] - v[i][k] : 0.0) + (fd ? fd[i][k] : 0.0)
+                           + R[k]/h;
             f[i][k] = scale*F;
-            // x = h F/m' : the drag with the trapezoidal weight
-            if (impulse) impulse[i][k] += h*Ki*(uf[i][k] - v[i][k] - (moves ? dragWeight*h*F/(m[i] + dragWeight*h*Ki) : 0.0));
+            // x = h F/m' : the drag with the trapezoidal weight, and its
+            // random part
+            if (impulse) impulse[i][k] += h*Ki*(uf[i][k] - v[i][k] - (moves ? dragWeight*h*F/(m[i] + dragWeight*h*Ki) : 0.0))
+                                        + R[k];
         }
     }
 
@@ -539,6 +627,7 @@ void FixColloidImplicit::solveSystem(double h, bool accumulateImpulse)
 
     // residual of the start value x = v' - v = 0: h times the force of
     // the step with every damping term at the current velocities
+    thermal_.assign(thermal ? 3*nlocal : 0, 0.0);
     for (int i : coupled_)
     {
         const double Ki = K ? K[i] : 0.0;
@@ -546,12 +635,13 @@ void FixColloidImplicit::solveSystem(double h, bool accumulateImpulse)
         double *A = &blockA_[6*i];
         A[0] = A[1] = A[2] = d;
         A[3] = A[4] = A[5] = 0.0;
+        if (thermal && (mask[i] & integrated_) && Ki > 0.0) thermalImpulse(tag[i], Ki, h, &thermal_[3*i]);
         for (int k = 0; k < 3; k++)
         {
             double F = f[i][k];
             if (K) F += Ki*(uf[i][k] - v[i][k]);
             if (fd) F += fd[i][k];
-            r_[3*i + k] = h*F;
+            r_[3*i + k] = h*F + (thermal ? thermal_[3*i + k] : 0.0);
             x_[3*i + k] = 0.0;
         }
     }
@@ -641,7 +731,8 @@ void FixColloidImplicit::solveSystem(double h, bool accumulateImpulse)
         for (int k = 0; k < 3; k++)
         {
             if (mask[i] & integrated_) f[i][k] = m[i]*x_[3*i + k]*mOverH;
-            if (impulse) impulse[i][k] += h*K[i]*(uf[i][k] - (v[i][k] + dragWeight*x_[3*i + k]));
+            if (impulse) impulse[i][k] += h*K[i]*(uf[i][k] - (v[i][k] + dragWeight*x_[3*i + k]))
+                                        + (thermal ? thermal_[3*i + k] : 0.0);
         }
 }
 
@@ -667,7 +758,7 @@ double FixColloidImplicit::memory_usage()
     return sizeof(PairTerm)*pairs_.capacity() + sizeof(WallTerm)*walls_.capacity()
          + sizeof(double)*(x_.capacity() + r_.capacity() + z_.capacity()
                            + p_.capacity() + q_.capacity() + blockA_.capacity()
-                           + blockInv_.capacity() + r0_.capacity())
+                           + blockInv_.capacity() + r0_.capacity() + thermal_.capacity())
          + sizeof(int)*(parent_.capacity() + groupStart_.capacity() + pairStart_.capacity()
                         + groupMembers_.capacity() + groupPairs_.capacity() + fill_.capacity()
                         + boundaryMembers_.capacity() + boundaryPairs_.capacity()

@@ -122,6 +122,8 @@ private:
     void solve(double h, bool accumulateImpulse);
     void solveSystem(double h, bool accumulateImpulse);
     void findDragProperties();
+    void findBrownianMotion();
+    void thermalImpulse(int tag, double K, double h, double *R) const;
     void findGroups();
     void solvePair(const PairTerm & t);
     void solveDense(const int *members, int n, const int *pairIdx, int nPairs);
@@ -143,6 +145,13 @@ private:
 
     // group bits of the time-integrated particles (the unknowns)
     int integrated_;
+
+    // Brownian motion with the drag (property/global brownianTemperature
+    // [K] and brownianSeed): k_B T [run units], 0 when off; the seed; the
+    // random impulses of this step's coupled particles, 3 per atom
+    double kT_;
+    unsigned long seed_;
+    std::vector<double> thermal_;
 
     // step of the current solve [run units]
     double h_;

@@ -33,3 +33,18 @@ add_test(NAME case.agglomeration.shearCollisions
     COMMAND ${agglomerationDir}/runShearTest.sh ${agglomerationWork}/shear)
 set_tests_properties(case.agglomeration.shearCollisions PROPERTIES
     TIMEOUT 600 LABELS "case;agglomeration" ENVIRONMENT PYTHONDONTWRITEBYTECODE=1)
+
+# agglomeration.brownian.serial / .parallel: Brownian motion in the coupled
+# solver (couplingProperties brownian): 2000 free spheres against the
+# Langevin mean square displacement (4 standard errors), and the 2-rank
+# run's positions those of the serial run (runBrownianTest.sh,
+# checkBrownian.py).
+foreach(mode serial parallel)
+    add_test(NAME case.agglomeration.brownian.${mode}
+        COMMAND ${agglomerationDir}/runBrownianTest.sh ${mode} ${agglomerationWork}/brownian_${mode})
+    set_tests_properties(case.agglomeration.brownian.${mode} PROPERTIES
+        TIMEOUT 300 LABELS "case;agglomeration" ENVIRONMENT PYTHONDONTWRITEBYTECODE=1)
+endforeach()
+set_tests_properties(case.agglomeration.brownian.serial PROPERTIES FIXTURES_SETUP brownianSerial)
+set_tests_properties(case.agglomeration.brownian.parallel PROPERTIES
+    PROCESSORS 2 FIXTURES_REQUIRED brownianSerial)

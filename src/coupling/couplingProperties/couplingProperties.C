@@ -76,7 +76,9 @@ Foam::couplingProperties::couplingProperties(const objectRegistry& obr)
     contactAnalysis_(false),
     contactInterval_(1),
     touchingGap_(0.01),
-    agglomerateGap_(0.01)
+    agglomerateGap_(0.01),
+    brownianTemperature_(0),
+    brownianSeed_(0)
 {
     const dictionary& dict = *this;
 
@@ -244,13 +246,43 @@ Foam::couplingProperties::couplingProperties(const objectRegistry& obr)
         keywordCheck(ca, {"interval", "touchingGap", "agglomerateGap"}, true);
     }
 
+    // Brownian motion: the DEM's drag update adds the random force
+    if (dict.found("brownian"))
+    {
+        const dictionary& br = requiredSubDict(dict, "brownian");
+        brownianTemperature_ = positiveScalar(br, "temperature");
+        if (brownianTemperature_ >= 1e4)
+        {
+            FatalIOErrorInFunction(br)
+                << "Keyword 'temperature' in " << br.name() << " is "
+                << brownianTemperature_ << "; allowed range: (0, 1e4) K"
+                << exit(FatalIOError);
+        }
+        if (!br.found("seed"))
+        {
+            FatalIOErrorInFunction(br)
+                << "Missing keyword 'seed' in " << br.name()
+                << " (allowed range: integer 1 to 2e9; the same seed gives"
+                << " the same run)" << exit(FatalIOError);
+        }
+        brownianSeed_ = br.get<label>("seed");
+        if (brownianSeed_ < 1)
+        {
+            FatalIOErrorInFunction(br)
+                << "Keyword 'seed' in " << br.name() << " is "
+                << brownianSeed_ << "; allowed range: integer 1 to 2e9"
+                << exit(FatalIOError);
+        }
+        keywordCheck(br, {"temperature", "seed"}, true);
+    }
+
     // Misspelt keywords: the sub-dictionaries hold only these settings;
     // the top level may also hold a case's #included parameters
     keywordCheck
     (
         dict,
         {"couplingMode", "dragModel", "forceModels", "twoWay", "fluid",
-         "particles", "DEM", "contactAnalysis"},
+         "particles", "DEM", "contactAnalysis", "brownian"},
         false
     );
     if (twoWay_)

@@ -257,6 +257,35 @@ void Foam::demCoupling::startDEM()
         dem.command(os.str());
     }
 
+    // Brownian motion: the plugin's drag update reads these properties;
+    // couplingProperties is their one source
+    if (props_.brownianTemperature() > 0)
+    {
+        for (const char* name : {"brownianTemperature", "brownianSeed"})
+        {
+            if (dem.hasGlobalProperty(name))
+            {
+                FatalIOErrorInFunction(props_)
+                    << "Brownian motion is set in " << props_.name()
+                    << " (brownian), and the DEM script "
+                    << props_.demScript() << " defines property " << name
+                    << " too: remove it from the script" << exit(FatalIOError);
+            }
+        }
+        std::ostringstream os;
+        os.precision(17);
+        os  << "fix colloidBrownianTemperature all property/global"
+            << " brownianTemperature scalar " << props_.brownianTemperature();
+        dem.command(os.str());
+        dem.command
+        (
+            "fix colloidBrownianSeed all property/global brownianSeed scalar "
+          + std::to_string(props_.brownianSeed())
+        );
+        Info<< "Brownian motion: " << props_.brownianTemperature()
+            << " K, seed " << props_.brownianSeed() << endl;
+    }
+
     restart_.addFixes(dem);
     dem.implicitDamping();
 

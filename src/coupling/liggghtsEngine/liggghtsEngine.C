@@ -341,6 +341,15 @@ void Foam::liggghtsEngine::implicitDamping()
 }
 
 
+bool Foam::liggghtsEngine::hasGlobalProperty(const std::string& name) const
+{
+    return engine(lmp_)->modify->find_fix_property
+    (
+        name.c_str(), "property/global", "scalar", 0, 0, "colloidFoam", false
+    ) != nullptr;
+}
+
+
 void* Foam::liggghtsEngine::newContactAnalysis
 (
     double touchingGap,
