@@ -26,10 +26,8 @@ set +u
 source "$here/../../../etc/bashrc"
 set -u
 
-rm -rf "$work"
-mkdir -p "$(dirname "$work")"
-cp -r "$here/../coupling/case" "$work"
-cd "$work"
+source "$here/channelCase.sh"
+newChannelCase
 sed -i "s/^endTime .*/endTime 2e-08;/" system/controlDict
 cat >> constant/couplingProperties <<'DICT'
 
@@ -41,21 +39,9 @@ contactAnalysis
 }
 DICT
 python3 "$here/writeArrangement.py" > arrangement.liggghts
-sed -i -e 's/^boundary .*/boundary        f f p\nprocessors      * 1 1/' \
-    -e '/^create_atoms/d' \
-    -e 's|^set .*group all|include         arrangement.liggghts\n&|' constant/DEM/in.liggghts
-grep -q "^include *arrangement" constant/DEM/in.liggghts
-blockMesh > log.blockMesh 2>&1
-mkdir -p 0
-postProcess -func writeCellCentres -time 0 > log.writeCellCentres 2>&1
-python3 "$here/../coupling/setPoiseuilleU.py" . 1e-4 0
-case $mode in
-    serial) colloidDEMFoam > log.colloidDEMFoam 2>&1 || { tail -30 log.colloidDEMFoam; exit 1; } ;;
-    parallel)
-        decomposePar > log.decomposePar 2>&1
-        mpirun -np 2 colloidDEMFoam -parallel > log.colloidDEMFoam 2>&1 \
-            || { tail -30 log.colloidDEMFoam; exit 1; } ;;
-    *) echo "usage: $0 serial|parallel workDir" 1>&2; exit 1 ;;
-esac
+sed -i 's/^boundary .*/boundary        f f p\nprocessors      * 1 1/' constant/DEM/in.liggghts
+includeParticles arrangement.liggghts
+meshAndQuiescentFluid
+runChannelSolver "$mode"
 grep "^Contacts:" log.colloidDEMFoam | head -1
 python3 "$here/checkArrangement.py" . "$mode"

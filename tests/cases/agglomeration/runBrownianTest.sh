@@ -17,10 +17,8 @@ set +u
 source "$here/../../../etc/bashrc"
 set -u
 
-rm -rf "$work"
-mkdir -p "$(dirname "$work")"
-cp -r "$here/../coupling/case" "$work"
-cd "$work"
+source "$here/channelCase.sh"
+newChannelCase
 sed -i -e "s/^endTime .*/endTime 1.4e-06;/" -e "s/^writeInterval .*/writeInterval 70;/" system/controlDict
 sed -i 's/^value .*/value (0 0 0);/' constant/g
 cat >> constant/couplingProperties <<'DICT'
@@ -34,20 +32,8 @@ DICT
 # in 1 < x < 99, 1 < z < 49: away from the box's faces (not periodic here)
 python3 "$here/makeShearParticles.py" 2000 0.5 25 75 98 48 1.0 \
     | awk '{ $4 += 1; $6 += 1; print }' > particles.liggghts
-sed -i -e '/^create_atoms/d' \
-    -e 's|^set .*group all|include         particles.liggghts\n&|' constant/DEM/in.liggghts
-blockMesh > log.blockMesh 2>&1
-mkdir -p 0
-postProcess -func writeCellCentres -time 0 > log.writeCellCentres 2>&1
-python3 "$here/../coupling/setPoiseuilleU.py" . 1e-4 0
-case $mode in
-    serial) colloidDEMFoam > log.colloidDEMFoam 2>&1 || { tail -30 log.colloidDEMFoam; exit 1; } ;;
-    parallel)
-        decomposePar > log.decomposePar 2>&1
-        mpirun -np 2 colloidDEMFoam -parallel > log.colloidDEMFoam 2>&1 \
-            || { tail -30 log.colloidDEMFoam; exit 1; }
-        reconstructPar > log.reconstructPar 2>&1 ;;
-    *) echo "usage: $0 serial|parallel workDir" 1>&2; exit 1 ;;
-esac
+includeParticles particles.liggghts
+meshAndQuiescentFluid
+runChannelSolver "$mode"
 grep "^Brownian motion" log.colloidDEMFoam
 python3 "$here/checkBrownian.py" . $( [ "$mode" = parallel ] && echo "$(dirname "$work")/brownian_serial" )

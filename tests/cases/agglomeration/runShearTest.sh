@@ -21,10 +21,8 @@ set -u
 H=100; G=1e4; R=0.5; y0=25; y1=75; Lx=100; Lz=50; N=14324   # um, 1/s; 3 % of the band
 endTime=2e-4
 
-rm -rf "$work"
-mkdir -p "$(dirname "$work")"
-cp -r "$here/../coupling/case" "$work"
-cd "$work"
+source "$here/channelCase.sh"
+newChannelCase
 cat > system/shear <<DICT
 G       $G;     // shear rate [1/s]
 H       ${H}e-6;    // channel height [m]
@@ -51,11 +49,9 @@ python3 "$here/makeShearParticles.py" $N $R $y0 $y1 $Lx $Lz 0.02 > particles.lig
 # Soft glass (E = 1e6 Pa: a Rayleigh time of 1.4e-7 s, 7 DEM steps), the
 # box periodic in x and z, the particles of particles.liggghts
 sed -i -e 's/^boundary .*/boundary        p f p/' \
-    -e 's/youngsModulus peratomtype .*/youngsModulus peratomtype 1e3/' \
-    -e '/^create_atoms/d' \
-    -e 's|^set .*group all|include         particles.liggghts\n&|' constant/DEM/in.liggghts
-grep -q "^include *particles.liggghts" constant/DEM/in.liggghts
+    -e 's/youngsModulus peratomtype .*/youngsModulus peratomtype 1e3/' constant/DEM/in.liggghts
 grep -q "youngsModulus peratomtype 1e3" constant/DEM/in.liggghts
+includeParticles particles.liggghts
 blockMesh > log.blockMesh 2>&1
 mkdir -p 0
 postProcess -func writeCellCentres -time 0 > log.writeCellCentres 2>&1

@@ -1,0 +1,45 @@
+# Sourced by the agglomeration tests that run colloidDEMFoam in the
+# coupling tests' channel (tests/cases/coupling/case: 100 x 100 x 50 um,
+# spheres of d = 1 um).  Needs: here (this folder), work.
+#
+#   newChannelCase             a fresh copy in work, cd there
+#   includeParticles FILE      the DEM script creates the particles of FILE
+#                              (create_atoms lines) instead of its own
+#   meshAndQuiescentFluid      mesh, U = 0
+#   runChannelSolver MODE      serial | parallel (2 ranks; reconstructed)
+
+newChannelCase()
+{
+    rm -rf "$work"
+    mkdir -p "$(dirname "$work")"
+    cp -r "$here/../coupling/case" "$work"
+    cd "$work"
+}
+
+includeParticles()
+{
+    sed -i -e '/^create_atoms/d' \
+        -e "s|^set .*group all|include         $1\n&|" constant/DEM/in.liggghts
+    grep -q "^include *$1" constant/DEM/in.liggghts
+}
+
+meshAndQuiescentFluid()
+{
+    blockMesh > log.blockMesh 2>&1
+    mkdir -p 0
+    postProcess -func writeCellCentres -time 0 > log.writeCellCentres 2>&1
+    python3 "$here/../coupling/setPoiseuilleU.py" . 1e-4 0
+}
+
+runChannelSolver()
+{
+    case $1 in
+        serial) colloidDEMFoam > log.colloidDEMFoam 2>&1 || { tail -30 log.colloidDEMFoam; exit 1; } ;;
+        parallel)
+            decomposePar > log.decomposePar 2>&1
+            mpirun -np 2 colloidDEMFoam -parallel > log.colloidDEMFoam 2>&1 \
+                || { tail -30 log.colloidDEMFoam; exit 1; }
+            reconstructPar > log.reconstructPar 2>&1 ;;
+        *) echo "usage: $0 serial|parallel workDir" 1>&2; exit 1 ;;
+    esac
+}
