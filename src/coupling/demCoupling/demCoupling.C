@@ -315,10 +315,12 @@ void Foam::demCoupling::analyseContacts()
     {
         return;
     }
+    clockTime clock;
     pointField position;
     labelList proc, cell;
     scalarField wallDist;
     locateLocal(props_.touchingGap(), position, proc, cell, wallDist);
+    analysisLocateSeconds_ += clock.timeIncrement();
 
     const double* r = engine_().radius();
     labelList touchingWall(position.size(), 0);
@@ -330,6 +332,8 @@ void Foam::demCoupling::analyseContacts()
     }
     contacts_->analyse(engine_(), mesh_.time().value(), touchingWall);
     analysedAt_ = mesh_.time().timeIndex();
+    analysisSeconds_ += clock.timeIncrement();
+    ++nAnalyses_;
 }
 
 
@@ -690,6 +694,9 @@ Foam::demCoupling::demCoupling
     restart_(U.mesh()),
     nCouplingSteps_(0),
     analysedAt_(-1),
+    nAnalyses_(0),
+    analysisSeconds_(0),
+    analysisLocateSeconds_(0),
     nInserted_(0),
     demSeconds_(0),
     couplingSeconds_(0),
@@ -1252,6 +1259,13 @@ void Foam::demCoupling::write
                 << " s, coupling " << couplingSeconds_ << " s; "
                 << particleSteps_/total/Pstream::nProcs()
                 << " particle-steps per second per rank" << endl;
+        }
+        if (nAnalyses_ > 0)
+        {
+            Info<< "Contact analysis: " << nAnalyses_ << " analyses, "
+                << analysisLocateSeconds_ + analysisSeconds_ << " s (of it "
+                << analysisLocateSeconds_ << " s the particles' wall"
+                << " distances), in the coupling's time" << endl;
         }
         if (dem.nFixesOfStyle("colloid/implicit") > 0)
         {

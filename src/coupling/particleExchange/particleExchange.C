@@ -39,7 +39,7 @@ void Foam::particleExchange::answer
         cell[i] = locator_.findCell(p[i], hint[i]);
         wallDist[i] =
             (cell[i] >= 0 && maxWallDist[i] > 0)
-          ? locator_.wallDistance(p[i], maxWallDist[i])
+          ? locator_.wallDistance(p[i], cell[i], maxWallDist[i])
           : GREAT;
     }
 }

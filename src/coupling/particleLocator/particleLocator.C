@@ -10,6 +10,7 @@ Foam::particleLocator::particleLocator(const polyMesh& mesh)
     wallTree_(),
     faceNormal_(mesh.faceAreas()/mag(mesh.faceAreas())),
     convexCell_(mesh.nCells(), true),
+    wallLowerBound_(mesh.nCells(), GREAT),
     nGlobalSearches_(0)
 {
     // Convex cells bounded by planar faces: every point of the cell on the
@@ -75,6 +76,21 @@ Foam::particleLocator::particleLocator(const polyMesh& mesh)
                 3.0     // duplicity
             )
         );
+
+        // Most cells are far from every wall: their points' distance,
+        // bounded below once here, spares the particles in them the search
+        const vectorField& C = mesh.cellCentres();
+        forAll(wallLowerBound_, celli)
+        {
+            scalar reach = 0;
+            for (const label pointi : mesh.cellPoints()[celli])
+            {
+                reach = max(reach, mag(pts[pointi] - C[celli]));
+            }
+            const pointIndexHit hit = wallTree_->findNearest(C[celli], GREAT);
+            wallLowerBound_[celli] =
+                hit.hit() ? max(scalar(0), mag(hit.hitPoint() - C[celli]) - reach) : GREAT;
+        }
     }
 }
 
@@ -221,10 +237,11 @@ Foam::label Foam::particleLocator::walkFrom
 Foam::scalar Foam::particleLocator::wallDistance
 (
     const point& p,
+    const label celli,
     const scalar maxDist
 ) const
 {
-    if (!wallTree_.valid())
+    if (!wallTree_.valid() || wallLowerBound_[celli] > maxDist)
     {
         return GREAT;
     }
