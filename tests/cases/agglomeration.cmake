@@ -48,3 +48,16 @@ endforeach()
 set_tests_properties(case.agglomeration.brownian.serial PROPERTIES FIXTURES_SETUP brownianSerial)
 set_tests_properties(case.agglomeration.brownian.parallel PROPERTIES
     PROCESSORS 2 FIXTURES_REQUIRED brownianSerial)
+
+# agglomeration.periodicCrossing.serial / .parallel: a touching pair
+# carried over the DEM's periodic face (on 2 ranks also the ranks'
+# boundary) keeps its one contact, never broken or formed again, and both
+# particles keep moving with the flow (runPeriodicCrossingTest.sh,
+# checkPeriodicCrossing.py).
+foreach(mode serial parallel)
+    add_test(NAME case.agglomeration.periodicCrossing.${mode}
+        COMMAND ${agglomerationDir}/runPeriodicCrossingTest.sh ${mode} ${agglomerationWork}/periodicCrossing_${mode})
+    set_tests_properties(case.agglomeration.periodicCrossing.${mode} PROPERTIES
+        TIMEOUT 120 LABELS "case;agglomeration" ENVIRONMENT PYTHONDONTWRITEBYTECODE=1)
+endforeach()
+set_tests_properties(case.agglomeration.periodicCrossing.parallel PROPERTIES PROCESSORS 2)
