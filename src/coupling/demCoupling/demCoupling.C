@@ -309,21 +309,15 @@ void Foam::demCoupling::startDEM()
 }
 
 
-void Foam::demCoupling::analyseContacts()
+void Foam::demCoupling::analyseContacts(const scalarField& wallDist)
 {
     if (!contacts_.valid() || analysedAt_ == mesh_.time().timeIndex())
     {
         return;
     }
     clockTime clock;
-    pointField position;
-    labelList proc, cell;
-    scalarField wallDist;
-    locateLocal(props_.touchingGap(), position, proc, cell, wallDist);
-    analysisLocateSeconds_ += clock.timeIncrement();
-
     const double* r = engine_().radius();
-    labelList touchingWall(position.size(), 0);
+    labelList touchingWall(wallDist.size(), 0);
     forAll(touchingWall, i)
     {
         const scalar radius = demUnits::length*r[i];
@@ -548,14 +542,17 @@ void Foam::demCoupling::checkForceModels() const
 }
 
 
-void Foam::demCoupling::gatherRecords()
+void Foam::demCoupling::gatherRecords
+(
+    const scalar wallRange,
+    scalarField& wallDist
+)
 {
     countNewParticles();
 
     pointField position;
     labelList cell;
-    scalarField wallDist;
-    locateLocal(0, position, proc_, cell, wallDist);
+    locateLocal(wallRange, position, proc_, cell, wallDist);
 
     liggghtsEngine& dem = engine_();
     const int n = dem.nLocal();
@@ -696,7 +693,6 @@ Foam::demCoupling::demCoupling
     analysedAt_(-1),
     nAnalyses_(0),
     analysisSeconds_(0),
-    analysisLocateSeconds_(0),
     nInserted_(0),
     demSeconds_(0),
     couplingSeconds_(0),
@@ -764,13 +760,14 @@ Foam::demCoupling::demCoupling
     try
     {
         startDEM();
-        gatherRecords();
+        scalarField wallDist;
+        gatherRecords(contacts_.valid() ? props_.touchingGap() : 0, wallDist);
         if (!restart_.resume())
         {
             reportOutsideFluid();
         }
         updateForces();
-        analyseContacts();
+        analyseContacts(wallDist);
 
         // A fresh start's first step sets up with these forces (a resumed
         // run has the written run's last forces back instead)
@@ -1071,12 +1068,15 @@ void Foam::demCoupling::evolve()
         demSeconds_ += clock.timeIncrement();
         particleSteps_ += scalar(nTotal)*props_.couplingInterval();
 
-        gatherRecords();
-
+        // An analysis due: the locating gives it the wall distances too
         ++nCouplingSteps_;
-        if (contacts_.valid() && nCouplingSteps_ % contacts_->interval() == 0)
+        const bool analyse =
+            contacts_.valid() && nCouplingSteps_ % contacts_->interval() == 0;
+        scalarField wallDist;
+        gatherRecords(analyse ? props_.touchingGap() : 0, wallDist);
+        if (analyse)
         {
-            analyseContacts();
+            analyseContacts(wallDist);
         }
 
         couplingSeconds_ += clock.timeIncrement();
@@ -1136,13 +1136,19 @@ void Foam::demCoupling::write
     {
         countNewParticles();
 
-        // Every write has its analysis (the particles' agglomerate sizes)
-        analyseContacts();
-
+        // Wall distances for the touching flag and, if the analysis is
+        // on, for its range; every write has its analysis (the particles'
+        // agglomerate sizes)
         pointField position;
         labelList proc, cell;
         scalarField wallDist;
-        locateLocal(touchTolerance_, position, proc, cell, wallDist);
+        locateLocal
+        (
+            contacts_.valid()
+          ? max(touchTolerance_, props_.touchingGap()) : touchTolerance_,
+            position, proc, cell, wallDist
+        );
+        analyseContacts(wallDist);
 
         liggghtsEngine& dem = engine_();
         const int n = dem.nLocal();
@@ -1263,9 +1269,8 @@ void Foam::demCoupling::write
         if (nAnalyses_ > 0)
         {
             Info<< "Contact analysis: " << nAnalyses_ << " analyses, "
-                << analysisLocateSeconds_ + analysisSeconds_ << " s (of it "
-                << analysisLocateSeconds_ << " s the particles' wall"
-                << " distances), in the coupling's time" << endl;
+                << analysisSeconds_ << " s in the coupling's time (the"
+                << " wall distances come with the locating)" << endl;
         }
         if (dem.nFixesOfStyle("colloid/implicit") > 0)
         {
