@@ -4,6 +4,7 @@
 
 #include "demWallExport.H"
 #include "patchTriangulation.H"
+#include "triangleRefinement.H"
 #include "writeAsciiStl.H"
 #include "wallPolyPatch.H"
 #include "Pstream.H"
@@ -12,11 +13,24 @@
 
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
 
-Foam::demWallExport::demWallExport(const polyMesh& mesh, const scalar scale)
+Foam::demWallExport::demWallExport
+(
+    const polyMesh& mesh,
+    const scalar scale,
+    const scalar maxEdge
+)
 :
     mesh_(mesh),
-    scale_(scale)
+    scale_(scale),
+    maxEdge_(maxEdge)
 {
+    if (!(maxEdge_ > 0))
+    {
+        FatalErrorInFunction
+            << "Longest DEM triangle edge " << maxEdge_
+            << " (DEM length units) must be > 0"
+            << exit(FatalError);
+    }
     if (!(scale_ > 0))
     {
         FatalErrorInFunction
@@ -140,11 +154,24 @@ Foam::fileName Foam::demWallExport::write
             }
         }
 
+        // Refined once all ranks' triangles are together: the same levels
+        // for the whole patch keep it conforming
+        const label levels = demWalls::refinementLevels(all, maxEdge_);
+        if (levels)
+        {
+            all = demWalls::refineTriangles(all, levels);
+        }
+
+        Info<< "DEM surface " << name << ": " << all.size() << " triangles";
+        if (levels)
+        {
+            Info<< " (" << nTris << " refined " << levels
+                << " times: no edge longer than " << maxEdge_ << ')';
+        }
+        Info<< " -> " << stlFile << endl;
+
         demWalls::writeAsciiStl(stlFile, name, all);
     }
-
-    Info<< "DEM surface " << name << ": " << nTris << " triangles -> "
-        << stlFile << endl;
 
     return stlFile;
 }

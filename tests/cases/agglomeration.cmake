@@ -61,3 +61,14 @@ foreach(mode serial parallel)
         TIMEOUT 120 LABELS "case;agglomeration" ENVIRONMENT PYTHONDONTWRITEBYTECODE=1)
 endforeach()
 set_tests_properties(case.agglomeration.periodicCrossing.parallel PROPERTIES PROCESSORS 2)
+
+# agglomeration.slotCoaterPeriodicFill: the slot coater's DEM box is
+# periodic in z, and its fill keeps fillMinimumGap between every two
+# particles (across the periodic face too) and from the walls, with no
+# empty band at the periodic face (checkSlotCoaterFill.py, on the serial
+# fixture of case.slotCoater).
+add_test(NAME case.agglomeration.slotCoaterPeriodicFill
+    COMMAND python3 ${agglomerationDir}/checkSlotCoaterFill.py ${CMAKE_CURRENT_BINARY_DIR}/slotCoater/serial)
+set_tests_properties(case.agglomeration.slotCoaterPeriodicFill PROPERTIES
+    TIMEOUT 60 LABELS "case;agglomeration;slotCoater" ENVIRONMENT PYTHONDONTWRITEBYTECODE=1
+    FIXTURES_REQUIRED slotCoater_serial)

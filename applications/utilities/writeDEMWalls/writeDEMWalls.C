@@ -33,6 +33,12 @@ Usage
       - \par -dir \<dir\>
         Output directory, relative to the case (default DEM/meshes).
 
+      - \par -maxEdge \<length\>
+        Longest triangle edge, in DEM length units: longer triangles are
+        cut into four by their edge midpoints, as often as the longest
+        edge of the patch needs (default: as triangulated).  A periodic
+        LIGGGHTS box needs triangles no longer than its period.
+
 \*---------------------------------------------------------------------------*/
 
 #include "argList.H"
@@ -76,6 +82,14 @@ int main(int argc, char *argv[])
         "Output directory, relative to the case (default DEM/meshes)"
     );
 
+    argList::addOption
+    (
+        "maxEdge",
+        "length",
+        "Longest triangle edge in DEM length units (refine longer ones;"
+        " a periodic LIGGGHTS box needs edges no longer than its period)"
+    );
+
     #include "setRootCase.H"
     #include "createTime.H"
     #include "createPolyMesh.H"
@@ -87,7 +101,16 @@ int main(int argc, char *argv[])
         dir = runTime.globalPath()/dir;
     }
 
-    const demWallExport walls(mesh, scale);
+    const scalar maxEdge = args.getOrDefault<scalar>("maxEdge", VGREAT);
+    if (!(maxEdge > 0))
+    {
+        FatalErrorInFunction
+            << "-maxEdge " << maxEdge
+            << ": the longest triangle edge must be > 0 (DEM length units)"
+            << exit(FatalError);
+    }
+
+    const demWallExport walls(mesh, scale, maxEdge);
 
     labelList patchIDs;
     if (args.found("patches"))

@@ -9,10 +9,14 @@ the DEM length scale s):
     = Lx Ly Lz s^3; positive only if every triangle winds outwards
   - every facet normal is the unit normal of its winding and equals the
     outward normal of the box side the triangle lies on (out of the fluid)
-  - optionally, the number of triangles (2 per quadrilateral face).
+  - optionally, the number of triangles (2 per quadrilateral face);
+  - optionally, refined triangles (writeDEMWalls -maxEdge): no edge longer
+    than MAXEDGE, and in each file a longest edge above MAXEDGE/2 (no
+    more refinement than needed).
 Relative tolerance 1e-7 (the files carry 10 significant digits).
 
-usage: checkStlBox.py STLDIR BOXPARAMETERS SCALE [NTRIANGLES]
+usage: checkStlBox.py STLDIR BOXPARAMETERS SCALE [NTRIANGLES [MAXEDGE]]
+       (NTRIANGLES -1: any number)
 """
 
 import glob
@@ -68,6 +72,7 @@ def read_stl(path):
 def main():
     stl_dir, params, scale = sys.argv[1], sys.argv[2], float(sys.argv[3])
     n_expected = int(sys.argv[4]) if len(sys.argv) > 4 else -1
+    max_edge = float(sys.argv[5]) if len(sys.argv) > 5 else None
 
     box = foamFields.read_parameters(params)
     lo = tuple(scale * box[k] for k in ("x0", "y0", "z0"))
@@ -79,8 +84,12 @@ def main():
 
     files = sorted(glob.glob(os.path.join(stl_dir, "*.stl")))
     facets = []
+    longest_per_file = []
     for path in files:
-        facets.extend(read_stl(path))
+        these = read_stl(path)
+        facets.extend(these)
+        longest_per_file.append(max(
+            norm(sub(t[(e + 1) % 3], t[e])) for _, t in these for e in range(3)))
 
     area, volume, bad_normals, bad_sides = 0.0, 0.0, 0, 0
     for stated, (a, b, c) in facets:
@@ -108,7 +117,16 @@ def main():
     print("facets whose stated normal differs from the winding: %d" % bad_normals)
     print("facets not on a box side or not facing out of the fluid: %d" % bad_sides)
 
-    ok = (facets and area_err < TOLERANCE and volume_err < TOLERANCE
+    refined_ok = True
+    if max_edge is not None:
+        longest = max(longest_per_file)
+        shortest_longest = min(longest_per_file)
+        refined_ok = (longest <= max_edge * (1 + TOLERANCE)
+                      and shortest_longest > 0.5 * max_edge)
+        print("longest edge %.10g (at most %g), shortest longest edge of a file"
+              " %.10g (above %g)" % (longest, max_edge, shortest_longest, 0.5 * max_edge))
+
+    ok = (refined_ok and facets and area_err < TOLERANCE and volume_err < TOLERANCE
           and bad_normals == 0 and bad_sides == 0
           and (n_expected < 0 or n_expected == len(facets)))
     print("PASS" if ok else "FAIL")

@@ -9,6 +9,9 @@
 #                 the master must write every face of both ranks once
 #       polyDual  the polyhedral dual of the hex mesh: polygonal faces
 #                 fanned into triangles
+#       refined   hex mesh, triangles refined to edges of at most 5 um
+#                 (-maxEdge 5: the box's triangles are 12-22 um long);
+#                 -maxEdge 0 is refused
 # The case is copied to WORKDIR (build tree); the source tree is not written.
 set -e
 here=$(cd "$(dirname "$0")" && pwd)
@@ -57,8 +60,20 @@ polyDual)
     run writeDEMWalls -scale $scale -walls -patches '(outlet)'
     nTriangles=-1
     ;;
+refined)
+    if writeDEMWalls -scale $scale -maxEdge 0 > log.writeDEMWalls.bad 2>&1
+    then
+        echo "FAIL: writeDEMWalls accepted -maxEdge 0"
+        exit 1
+    fi
+    grep -q "maxEdge 0" log.writeDEMWalls.bad \
+        || { echo "FAIL: no message naming -maxEdge 0"; cat log.writeDEMWalls.bad; exit 1; }
+    [ ! -d DEM ] || { echo "FAIL: files written for -maxEdge 0"; exit 1; }
+    run writeDEMWalls -scale $scale -walls -patches '(outlet)' -maxEdge 5
+    nTriangles="-1 5"
+    ;;
 *)
-    echo "unknown mode $mode (serial, parallel or polyDual)"
+    echo "unknown mode $mode (serial, parallel, polyDual or refined)"
     exit 1
     ;;
 esac
