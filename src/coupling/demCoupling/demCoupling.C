@@ -1170,6 +1170,7 @@ void Foam::demCoupling::write
         out.touchingWall.setSize(n);
         out.agglomerateSize =
             contacts_.valid() ? contacts_->agglomerateSize(n) : labelList(n, 1);
+        out.withAgglomerates = contacts_.valid();
         for (int i = 0; i < n; ++i)
         {
             const scalar radius = demUnits::length*r[i];

@@ -1,4 +1,5 @@
 #include "particleCloudWriter.H"
+#include "contactCellFields.H"
 #include "passiveParticleCloud.H"
 #include "IOField.H"
 #include "PstreamBuffers.H"
@@ -43,7 +44,7 @@ bool writeField
 
 Foam::label Foam::particleCloudWriter::write
 (
-    const polyMesh& mesh,
+    const fvMesh& mesh,
     const word& cloudName,
     const particles& local,
     bool& ok,
@@ -135,6 +136,11 @@ Foam::label Foam::particleCloudWriter::write
         p->origProc() = 0;
         p->origId() = id[k];
         list.append(p);
+
+        // The cell the particle settled in: for a point on a face it can
+        // be the neighbour of the one it was located in, and the cell
+        // fields count it where the cloud holds it
+        cell[k] = p->cell();
     }
 
     passiveParticleCloud cloud(mesh, cloudName, list);
@@ -159,7 +165,12 @@ Foam::label Foam::particleCloudWriter::write
              && writeField<label>(cloud, "nContacts", nContacts)
              && writeField<label>(cloud, "touchingParticle", touchingParticle)
              && writeField<label>(cloud, "touchingWall", touchingWall)
-             && writeField<label>(cloud, "agglomerateSize", agglomerateSize);
+             && writeField<label>(cloud, "agglomerateSize", agglomerateSize)
+             && writeContactCellFields
+                (
+                    mesh, cell, nContacts, touchingWall, agglomerateSize,
+                    local.withAgglomerates
+                );
         },
         error
     );
