@@ -30,20 +30,20 @@ def couplingEntry(name):
     return float(m.group(1))
 
 
-def demVariable(name):
-    """A variable of constant/DEM/approach.liggghts (LIGGGHTS units micro)"""
-    text = open("constant/DEM/approach.liggghts").read()
-    m = re.search(r"^variable\s+%s\s+equal\s+(\S+)" % name, text, re.M)
+def parameter(name):
+    """An entry of system/approachParameters (SI units)"""
+    text = open("system/approachParameters").read()
+    m = re.search(r"^%s\s+([^;\s]+)\s*;" % name, text, re.M)
     if not m:
-        raise SystemExit("constant/DEM/approach.liggghts: no variable %s" % name)
+        raise SystemExit("system/approachParameters: no %s" % name)
     return float(m.group(1))
 
 
-# The case's physics, from where the run reads it (SI units)
-HAMAKER = demVariable("hamaker")*1e-15           # fJ -> J
-VDW_CUTOFF = demVariable("vdwOuterCutoff")*1e-6  # um -> m
-LUB_CUTOFF = demVariable("lubricationOuterCutoff")*1e-6
-START = demVariable("initialGap")*1e-6
+# The case's physics, from where the run takes it (SI units)
+HAMAKER = parameter("hamaker")
+VDW_CUTOFF = parameter("vdwOuterCutoff")
+LUB_CUTOFF = parameter("lubricationOuterCutoff")
+START = parameter("initialGap")
 RADIUS = 0.5*couplingEntry("diameter")
 MU = couplingEntry("mu")
 

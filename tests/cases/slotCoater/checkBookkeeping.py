@@ -91,7 +91,7 @@ def main():
     check(abs(fill - expectedFill) <= 2,
           "initial fill %d, expected %.1f (solids fraction %g)" % (fill, expectedFill, phi))
 
-    feedZone = 2*d
+    feedZone = g["feedZone"]    # [um], as Allrun wrote it for the DEM
     feedVelocity = g["webSpeed"]*g["wetThickness"]/g["slotWidth"]
     batch = phi*g["slotWidth"]*g["span"]*feedZone/vp
     nBatches = 1 + int(1e-6*endTime*1e6/(feedZone/feedVelocity))   # um/(um/us) = us
