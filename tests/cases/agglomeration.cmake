@@ -65,8 +65,9 @@ set_tests_properties(case.agglomeration.periodicCrossing.parallel PROPERTIES PRO
 # agglomeration.slotCoaterPeriodicFill: the slot coater's DEM box is
 # periodic in z, and its fill keeps fillMinimumGap between every two
 # particles (across the periodic face too) and from the walls, with no
-# empty band at the periodic face (checkSlotCoaterFill.py, on the serial
-# fixture of case.slotCoater).
+# empty band at the periodic face; its feed inserts no particle closer
+# than half the gap to another (the solver's "Inserted particles" line)
+# (checkSlotCoaterFill.py, on the serial fixture of case.slotCoater).
 add_test(NAME case.agglomeration.slotCoaterPeriodicFill
     COMMAND python3 ${agglomerationDir}/checkSlotCoaterFill.py ${CMAKE_CURRENT_BINARY_DIR}/slotCoater/serial)
 set_tests_properties(case.agglomeration.slotCoaterPeriodicFill PROPERTIES

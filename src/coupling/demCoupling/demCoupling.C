@@ -346,11 +346,13 @@ void Foam::demCoupling::countNewParticles()
     label nNew = 0;
     label nOther = 0;
     scalar otherD = 0, otherRho = 0;
+    boolList inserted(n, false);
     for (int i = 0; i < n; ++i)
     {
         if (seen[i] == 0)
         {
             seen[i] = 1;
+            inserted[i] = true;
             ++nNew;
             const scalar di = 2*demUnits::length*r[i];
             const scalar rhoi =
@@ -368,7 +370,17 @@ void Foam::demCoupling::countNewParticles()
             }
         }
     }
-    nInserted_ += returnReduce(nNew, sumOp<label>());
+    const label nNewAll = returnReduce(nNew, sumOp<label>());
+    nInserted_ += nNewAll;
+
+    // The particles the script inserted during the run (those present at
+    // the start were checked before the first run): their smallest gap,
+    // in the log, and no overlap
+    if (startCounted_ && nNewAll)
+    {
+        checkInitialOverlaps(dem, props_.demScript(), &inserted);
+    }
+    startCounted_ = true;
 
     if (returnReduce(nOther, sumOp<label>()))
     {
@@ -694,6 +706,7 @@ Foam::demCoupling::demCoupling
     nAnalyses_(0),
     analysisSeconds_(0),
     nInserted_(0),
+    startCounted_(false),
     demSeconds_(0),
     couplingSeconds_(0),
     particleSteps_(0)

@@ -14,18 +14,27 @@
 namespace
 {
 
-// Particles as the check sees them: centre [um], radius [um], id
+// Particles as the check sees them: centre [um], radius [um], id, and
+// whether the check is about it (all, or those just inserted)
 struct sphereSet
 {
     Foam::DynamicList<Foam::point> x;
     Foam::DynamicList<Foam::scalar> r;
     Foam::DynamicList<Foam::label> id;
+    Foam::DynamicList<bool> checked;
 
-    void append(const Foam::point& p, const Foam::scalar radius, const Foam::label i)
+    void append
+    (
+        const Foam::point& p,
+        const Foam::scalar radius,
+        const Foam::label i,
+        const bool check
+    )
     {
         x.append(p);
         r.append(radius);
         id.append(i);
+        checked.append(check);
     }
 };
 
@@ -47,9 +56,18 @@ struct overlapPair
 void Foam::checkInitialOverlaps
 (
     const liggghtsEngine& dem,
-    const fileName& script
+    const fileName& script,
+    const boolList* inserted
 )
 {
+    // How the log and the messages name the particles checked
+    const bool initial = !inserted;
+    const char* who = initial ? "Initial particles" : "Inserted particles";
+    const char* what =
+        initial
+      ? "the DEM's initial particles"
+      : "the particles the DEM inserted during the run";
+
     const int n = dem.nLocal();
     double** x = dem.x();
     const double* r = dem.radius();
@@ -78,7 +96,8 @@ void Foam::checkInitialOverlaps
     for (int i = 0; i < n; ++i)
     {
         const point p(x[i][0], x[i][1], x[i][2]);
-        local.append(p, r[i], tag[i]);
+        const bool check = initial || (*inserted)[i];
+        local.append(p, r[i], tag[i], check);
         bool near = false;
         for (direction k = 0; k < 3; ++k)
         {
@@ -86,7 +105,7 @@ void Foam::checkInitialOverlaps
         }
         if (near)
         {
-            nearFaces.append(p, r[i], tag[i]);
+            nearFaces.append(p, r[i], tag[i], check);
         }
     }
 
@@ -101,7 +120,7 @@ void Foam::checkInitialOverlaps
             {
                 UOPstream os(proci, buffers);
                 os << pointField(nearFaces.x) << scalarField(nearFaces.r)
-                   << labelList(nearFaces.id);
+                   << labelList(nearFaces.id) << boolList(nearFaces.checked);
             }
         }
         buffers.finishedSends();
@@ -113,10 +132,11 @@ void Foam::checkInitialOverlaps
                 pointField px;
                 scalarField pr;
                 labelList pid;
-                is >> px >> pr >> pid;
+                boolList pc;
+                is >> px >> pr >> pid >> pc;
                 forAll(px, j)
                 {
-                    candidates.append(px[j], pr[j], pid[j]);
+                    candidates.append(px[j], pr[j], pid[j], pc[j]);
                 }
             }
         }
@@ -146,7 +166,10 @@ void Foam::checkInitialOverlaps
             {
                 continue;
             }
-            candidates.append(p, candidates.r[j], candidates.id[j]);
+            candidates.append
+            (
+                p, candidates.r[j], candidates.id[j], candidates.checked[j]
+            );
         }
     }
 
@@ -189,7 +212,11 @@ void Foam::checkInitialOverlaps
             }
             for (const label j : *iter)
             {
-                if (candidates.id[j] <= local.id[i])
+                if
+                (
+                    candidates.id[j] <= local.id[i]
+                 || !(local.checked[i] || candidates.checked[j])
+                )
                 {
                     continue;
                 }
@@ -230,7 +257,7 @@ void Foam::checkInitialOverlaps
         }
         if (smallest[0] < rMax)
         {
-            Info<< "Initial particles: smallest gap "
+            Info<< who << ": smallest gap "
                 << demUnits::length*smallest[0] << " m ("
                 << 100*smallest[0]/smallest[3] << " % of the smaller radius),"
                 << " between particles " << label(smallest[1]) << " and "
@@ -238,7 +265,7 @@ void Foam::checkInitialOverlaps
         }
         else
         {
-            Info<< "Initial particles: no two closer than one largest radius"
+            Info<< who << ": no two closer than one largest radius"
                 << " (gap " << demUnits::length*rMax << " m)" << endl;
         }
     }
@@ -286,14 +313,14 @@ void Foam::checkInitialOverlaps
     if (nStop)
     {
         FatalErrorInFunction
-            << nStop << " pairs of the DEM's initial particles (DEM script "
+            << nStop << " pairs of " << what << " (DEM script "
             << script << ") overlap by more than " << 100*stopFraction
             << " % of the smaller radius, the worst:" << text.c_str() << nl
             << "Place the particles apart (a fill with a minimum gap, or"
             << " the data file's coordinates)" << exit(FatalError);
     }
     WarningInFunction
-        << nWarn << " pairs of the DEM's initial particles (DEM script "
+        << nWarn << " pairs of " << what << " (DEM script "
         << script << ") overlap by more than " << 100*warnFraction
         << " % of the smaller radius (their elastic energy is released in"
         << " the first steps), the worst:" << text.c_str() << endl;

@@ -1,6 +1,7 @@
 #!/usr/bin/env python3
-"""The slot-coater tutorial's initial fill in its spanwise-periodic DEM box
-(issue 12, point 3), at test size (the serial fixture of case.slotCoater):
+"""The slot-coater tutorial's initial fill and feed in its spanwise-periodic
+DEM box (issue 12, points 0 and 3), at test size (the serial fixture of
+case.slotCoater):
 
   - the DEM box of the run is periodic in z (boundary f f p);
   - no two particles closer than fillMinimumGap, their periodic images
@@ -11,7 +12,12 @@
   - the periodic face is no wall for the fill: the particle centres within
     r + fillMinimumGap/2 of z = 0 or z = span (a reflecting or excluding
     face leaves that band empty) number what a uniform fill puts there,
-    within 4 binomial standard deviations.
+    within 4 binomial standard deviations;
+  - the feed's particles, inserted with their radius grown by half the
+    gap: the solver's log reports their smallest gap to any particle
+    ("Inserted particles: smallest gap", the start-up overlap check run on
+    them), at least fillMinimumGap/2 (LIGGGHTS' overlap check alone puts
+    some touching: gap 0).
 
 usage: checkSlotCoaterFill.py case"""
 import math
@@ -113,6 +119,13 @@ def main():
     check(abs(inBand - expected) <= 4*sigma,
           "centres within %.3g um of the periodic face: %d, uniform %.0f +- %.0f"
           % (w, inBand, expected, sigma))
+
+    solverLog = open(os.path.join(case, "log.colloidDEMFoam")).read()
+    inserted = re.findall(r"^Inserted particles: smallest gap (\S+) m", solverLog, re.M)
+    smallestInserted = min(float(g)*1e6 for g in inserted) if inserted else -1.0
+    check(bool(inserted) and smallestInserted >= 0.5*gapMin - tol,
+          "feed: %d insertion(s), smallest gap %.6g um >= fillMinimumGap/2"
+          % (len(inserted), smallestInserted))
 
     if not ok:
         raise SystemExit("FAIL")
