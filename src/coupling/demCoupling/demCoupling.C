@@ -346,13 +346,13 @@ void Foam::demCoupling::countNewParticles()
     label nNew = 0;
     label nOther = 0;
     scalar otherD = 0, otherRho = 0;
-    boolList inserted(n, false);
+    DynamicList<label> newAtoms;    // local indices; empty on most steps
     for (int i = 0; i < n; ++i)
     {
         if (seen[i] == 0)
         {
             seen[i] = 1;
-            inserted[i] = true;
+            newAtoms.append(i);
             ++nNew;
             const scalar di = 2*demUnits::length*r[i];
             const scalar rhoi =
@@ -378,6 +378,8 @@ void Foam::demCoupling::countNewParticles()
     // in the log, and no overlap
     if (startCounted_ && nNewAll)
     {
+        boolList inserted(n, false);
+        UIndirectList<bool>(inserted, newAtoms) = true;
         checkInitialOverlaps(dem, props_.demScript(), &inserted);
     }
     startCounted_ = true;

@@ -25,6 +25,11 @@ import os
 import re
 import sys
 
+# The slot-coater tests' reader of the DEM variables Allrun writes
+sys.dont_write_bytecode = True
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "slotCoater"))
+from checkBookkeeping import liggghtsVariables  # noqa: E402
+
 
 def dataAtoms(path):
     """Box and (diameter, x, y, z) of each atom of a LIGGGHTS data file
@@ -43,11 +48,6 @@ def dataAtoms(path):
         v = line.split()
         atoms.append((float(v[2]), float(v[4]), float(v[5]), float(v[6])))
     return box, atoms
-
-
-def liggghtsVariables(path):
-    return {m.group(1): float(m.group(2)) for m in
-            re.finditer(r"^variable (\w+) equal (\S+)", open(path).read(), re.M)}
 
 
 def main():
