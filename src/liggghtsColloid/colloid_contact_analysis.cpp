@@ -7,7 +7,12 @@
 #include "colloid_contact_analysis_api.h"
 
 #include <algorithm>
+#include <cerrno>
+#include <cinttypes>
 #include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <cstring>
 #include <limits>
 #include <mpi.h>
 #include <unordered_set>
@@ -337,6 +342,59 @@ void ColloidContactAnalysis::findAgglomerates(Result &result)
     }
 }
 
+/* ---------------------------------------------------------------------- */
+
+namespace {
+const char historyHeader[] = "colloidContactHistories";
+}
+
+// Text, one contact a line: p (pair) or w (wall), its key, its start
+// (%.17g: the same double back; nan when unknown)
+int ColloidContactAnalysis::saveHistories(const char *file) const
+{
+    FILE *out = std::fopen(file, "w");
+    if (!out) return errno ? errno : EIO;
+    std::fprintf(out, "%s 1 %d\n", historyHeader, comm->nprocs);
+    for (const auto &c : pairs_) std::fprintf(out, "p %" PRIu64 " %.17g\n", c.first, c.second);
+    for (const auto &c : walls_) std::fprintf(out, "w %" PRIu64 " %.17g\n", c.first, c.second);
+    const bool bad = std::ferror(out);
+    errno = 0;
+    if (std::fclose(out) != 0 || bad) return errno ? errno : EIO;
+    return 0;
+}
+
+int ColloidContactAnalysis::loadHistories(const char *file)
+{
+    FILE *in = std::fopen(file, "r");
+    if (!in) return errno == ENOENT ? ENOENT : EINVAL;
+    char word[64];
+    int version = 0, nprocs = 0;
+    if (std::fscanf(in, "%63s %d %d", word, &version, &nprocs) != 3
+     || std::strcmp(word, historyHeader) != 0 || version != 1 || nprocs != comm->nprocs)
+    {
+        std::fclose(in);
+        return EINVAL;
+    }
+    std::unordered_map<uint64_t, double> pairs, walls;
+    char kind[8], start[64];
+    uint64_t key = 0;
+    int n;
+    while ((n = std::fscanf(in, "%7s %" SCNu64 " %63s", kind, &key, start)) == 3)
+    {
+        const double t = std::strtod(start, NULL);   // "nan" reads as NaN
+        if (kind[0] == 'p') pairs[key] = t;
+        else if (kind[0] == 'w') walls[key] = t;
+        else break;
+    }
+    const bool complete = (n == EOF) && !std::ferror(in);
+    std::fclose(in);
+    if (!complete) return EINVAL;
+    pairs_.swap(pairs);
+    walls_.swap(walls);
+    first_ = false;
+    return 0;
+}
+
 /* ----------------------------------------------------------------------
    C interface (colloid_contact_analysis_api.h)
 ------------------------------------------------------------------------- */
@@ -415,4 +473,14 @@ int colloidContactAgglomerateSizes(void *analysis, const long **sizeCountPairs)
 const long *colloidContactAgglomerateSize(void *analysis)
 {
     return static_cast<Handle *>(analysis)->analysis.agglomerateSize().data();
+}
+
+int colloidContactSaveHistories(void *analysis, const char *file)
+{
+    return static_cast<Handle *>(analysis)->analysis.saveHistories(file);
+}
+
+int colloidContactLoadHistories(void *analysis, const char *file)
+{
+    return static_cast<Handle *>(analysis)->analysis.loadHistories(file);
 }

@@ -21,7 +21,8 @@
    Parallel: pairs come from the pair style's neighbour list (newton off:
    a pair with a ghost is seen by both ranks and counted once, by the atom
    with the smaller id); contact histories live on the rank a hash of the
-   pair assigns, so they survive atoms moving between ranks; clusters by
+   pair assigns, so they survive atoms moving between ranks (and, saved
+   with a restart, a resumed run of as many ranks); clusters by
    propagating the smallest id over bonds, with the ghosts' values
    forwarded (periodic images included) until no rank changes one. No
    rank gathers the particles.
@@ -75,6 +76,19 @@ public:
     const std::vector<int> &contacts() const { return contacts_; }
     const std::vector<long> &agglomerateSize() const { return size_; }
     const std::vector<long> &agglomerateId() const { return label_; }
+
+    // The contact histories this rank owns (key, start) to a file of its
+    // own, for a restart: a resumed run has as many ranks, so the same
+    // owners. Returns 0, or the errno of the failure (a full disk shows
+    // at the close). Not collective.
+    int saveHistories(const char *file) const;
+
+    // Back from saveHistories' file, before the first analysis of a
+    // resumed run: contacts present then keep their start (their
+    // durations are complete), and that analysis counts what formed and
+    // broke since the write. Returns 0, ENOENT when there is no file, or
+    // EINVAL when it is not one written by as many ranks. Not collective.
+    int loadHistories(const char *file);
 
 private:
     Settings settings_;

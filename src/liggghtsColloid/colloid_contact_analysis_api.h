@@ -50,6 +50,16 @@ int colloidContactAgglomerateSizes(void *analysis, const long **sizeCountPairs);
 __attribute__((visibility("default")))
 const long *colloidContactAgglomerateSize(void *analysis);
 
+// The contact histories (the start of each contact) of this rank, to and
+// from a file of its own, for a restart of as many ranks; load before the
+// first analysis. Each returns 0 or an errno value (load: ENOENT when
+// there is no file, EINVAL when it is not one of this number of ranks).
+// Not collective.
+__attribute__((visibility("default")))
+int colloidContactSaveHistories(void *analysis, const char *file);
+__attribute__((visibility("default")))
+int colloidContactLoadHistories(void *analysis, const char *file);
+
 }
 
 #endif

@@ -27,6 +27,16 @@
     Analysed every 1e-3 us: one contact formed and broken, its duration
     within one analysis interval of the closed form (each end is seen up
     to one interval late).
+
+    durationAcrossRestart: the same pass, with two more spheres that B
+    passes in the same way, D on the other side of its path just far
+    enough ahead that its contact begins right after the restart, and C
+    later; in the middle of the contact with A the histories are saved to
+    a file and a new analysis (as a resumed run makes) reads them back:
+    A's contact keeps its start, and D's and C's, formed after the
+    restart, count as formed: three contacts formed and broken, each
+    lasting the closed form within one interval. A file of another number of ranks is
+    refused (EINVAL) and a missing one reported (ENOENT).
 \*---------------------------------------------------------------------------*/
 #include "liggghtsRun.H"
 #include "colloid_contact_analysis.h"
@@ -35,6 +45,8 @@
 #include <gtest/gtest.h>
 
 #include <array>
+#include <cerrno>
+#include <fstream>
 #include <cmath>
 #include <sstream>
 #include <vector>
@@ -176,4 +188,59 @@ TEST(contactAnalysis, passingContactDuration)
     ASSERT_EQ(durations.size(), 1u);
     std::printf("contact duration %.6f us, closed form %.6f us\n", durations[0], duration);
     EXPECT_NEAR(durations[0], duration, interval);
+}
+
+TEST(contactAnalysis, durationAcrossRestart)
+{
+    const double v = 1.0;                   // um/us
+    const double offset = 2*R + touch;
+    const double halfWindow = std::sqrt(std::pow(2*R + 0.01*R, 2) - offset*offset);
+    const double duration = 2*halfWindow/v;
+    const double interval = 1e-3;           // us: 10 steps of 1e-4
+    const int restartAt = 500;              // analyses: B is beside A
+
+    LiggghtsRun run;
+    run.commands(LiggghtsRun::header(5.0) + materials());
+    // D: its window opens 0.4 ns after the restart (B at x = -0.5 + v t)
+    const double xD = restartAt*interval - 0.5 + halfWindow + 0.0004;
+    createAtoms(run, {{0.0, 0.0, 0.0}, {-0.5, offset, 0.0}, {1.5, 0.0, 0.0}, {xD, 2*offset, 0.0}});
+    run.commands("group mover id 2\nfix move mover move linear 1.0 0 0");
+    ColloidContactAnalysis before(run.instance(), settings());
+    run.commands("run 0");
+
+    long formed = 0, broken = 0;
+    std::vector<double> durations;
+    auto add = [&](const ColloidContactAnalysis::Result& r)
+    {
+        formed += r.pairFormed;
+        broken += r.pairBroken;
+        durations.insert(durations.end(), r.pairDurations.begin(), r.pairDurations.end());
+    };
+    for (int k = 0; k <= restartAt; k++)
+    {
+        if (k > 0) run.commands("run 10 pre no post no");
+        add(before.analyse(k*interval, nullptr));
+    }
+    ASSERT_EQ(formed, 1) << "B is not beside A at the restart";
+    ASSERT_EQ(before.saveHistories("contactHistory.test"), 0);
+
+    ColloidContactAnalysis after(run.instance(), settings());
+    EXPECT_EQ(after.loadHistories("contactHistory.missing"), ENOENT);
+    {
+        std::ofstream other("contactHistory.twoRanks");
+        other << "colloidContactHistories 1 2\n";
+    }
+    EXPECT_EQ(after.loadHistories("contactHistory.twoRanks"), EINVAL);
+    ASSERT_EQ(after.loadHistories("contactHistory.test"), 0);
+    for (int k = restartAt + 1; k <= 2100; k++)
+    {
+        run.commands("run 10 pre no post no");
+        add(after.analyse(k*interval, nullptr));
+    }
+    EXPECT_EQ(formed, 3);
+    EXPECT_EQ(broken, 3);
+    ASSERT_EQ(durations.size(), 3u);
+    std::printf("contact durations %.6f, %.6f and %.6f us, closed form %.6f us\n",
+                durations[0], durations[1], durations[2], duration);
+    for (double d : durations) EXPECT_NEAR(d, duration, interval);
 }

@@ -9,6 +9,8 @@
 #include "OSspecific.H"
 #include "liggghtsColloid/colloid_contact_analysis_api.h"
 
+#include <cerrno>
+#include <cstring>
 #include <sstream>
 #include <vector>
 
@@ -131,6 +133,50 @@ void Foam::contactAnalysis::analyse
         summary_ = os.str();
     }
     lastTime_ = t;
+}
+
+
+Foam::string Foam::contactAnalysis::saveHistories(const fileName& file) const
+{
+    const int err = colloidContactSaveHistories(handle_, file.c_str());
+    if (err == 0)
+    {
+        return string();
+    }
+    return "cannot write the contact histories " + file + ": "
+        + std::strerror(err);
+}
+
+
+void Foam::contactAnalysis::loadHistories(const fileName& file, const scalar t)
+{
+    const int err = colloidContactLoadHistories(handle_, file.c_str());
+    const int absent = returnReduce(err == ENOENT ? 1 : 0, sumOp<int>());
+    if (returnReduce(err == EINVAL ? 1 : 0, sumOp<int>()))
+    {
+        FatalErrorInFunction
+            << "The contact histories " << file << " (on at least one rank)"
+            << " were not written by a run of " << Pstream::nProcs()
+            << " ranks, or are incomplete: resume with as many ranks as the"
+            << " run that wrote them" << exit(FatalError);
+    }
+    if (absent && absent != Pstream::nProcs())
+    {
+        FatalErrorInFunction
+            << "The contact histories " << file << " are missing on "
+            << absent << " of " << Pstream::nProcs() << " ranks"
+            << exit(FatalError);
+    }
+    if (absent)
+    {
+        Info<< "Contact analysis: no contact histories in " << file.path()
+            << " (written before they were saved): the contacts present now"
+            << " have no known start" << endl;
+        return;
+    }
+    lastTime_ = t;
+    Info<< "Contact analysis: contact histories of time " << t
+        << " s read back" << endl;
 }
 
 

@@ -306,6 +306,16 @@ void Foam::demCoupling::startDEM()
 
     // Resuming: the script read the state; the last step's force back
     nInserted_ = restart_.restored(dem, props_.demScript());
+
+    // ... and the contacts' starts, so that durations go on
+    if (restart_.resume() && contacts_.valid())
+    {
+        contacts_->loadHistories
+        (
+            restart_.contactHistoryFile(),
+            mesh_.time().value()
+        );
+    }
 }
 
 
@@ -1266,7 +1276,8 @@ void Foam::demCoupling::write
 
         if (!atStart)
         {
-            const string problem = restart_.write(dem, nInserted_);
+            const string problem =
+                restart_.write(dem, nInserted_, contacts_.get());
             if (!problem.empty())
             {
                 restart_.abandonWrite(problem);

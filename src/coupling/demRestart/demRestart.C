@@ -1,4 +1,5 @@
 #include "demRestart.H"
+#include "contactAnalysis.H"
 #include "IOdictionary.H"
 #include "IFstream.H"
 #include "OSspecific.H"
@@ -15,6 +16,9 @@ namespace
 {
 
 const char* const markerName = "colloidCoupling";
+
+// In a write time's DEM folder: the contact analysis' histories
+const char* const contactHistoryName = "contactHistory";
 
 // The per-atom properties of the last step's force and torque
 const char* const forceFix = "colloidForce";
@@ -264,10 +268,17 @@ void Foam::demRestart::restoreLastStep
 }
 
 
+Foam::fileName Foam::demRestart::contactHistoryFile() const
+{
+    return mesh_.time().timePath()/"DEM"/contactHistoryName;
+}
+
+
 Foam::string Foam::demRestart::write
 (
     liggghtsEngine& dem,
-    const label nInserted
+    const label nInserted,
+    const contactAnalysis* contacts
 ) const
 {
     const Time& runTime = mesh_.time();
@@ -324,6 +335,14 @@ Foam::string Foam::demRestart::write
     if (failed())
     {
         return problem;
+    }
+    if (contacts)
+    {
+        problem = contacts->saveHistories(tmp/contactHistoryName);
+        if (failed())
+        {
+            return problem;
+        }
     }
 
     // write_restart exchanged atoms between ranks (and wrapped periodic

@@ -75,6 +75,16 @@ sed -i 's/^startFrom .*/startFrom       latestTime;/' system/controlDict
 run log.colloidDEMFoam || { echo "FAIL: the resumed run failed"; tail -30 log.colloidDEMFoam; exit 1; }
 grep -m1 "^Resuming from time $killTime:" log.colloidDEMFoam \
     || { echo "FAIL: the run did not resume from $killTime"; grep -m1 "^Resuming" log.colloidDEMFoam; exit 1; }
+# The contact analysis' histories were written with the state (one file
+# per rank) and read back: contacts open at the kill keep their start
+for dir in "${markers[@]}"
+do
+    history="${dir%uniform/colloidCoupling}DEM/contactHistory"
+    head -1 "$history" | grep -q "^colloidContactHistories 1 " \
+        || { echo "FAIL: no contact histories in $history"; exit 1; }
+done
+grep -m1 "^Contact analysis: contact histories of time $killTime s read back" log.colloidDEMFoam \
+    || { echo "FAIL: the resumed run did not read the contact histories back"; exit 1; }
 
 # 3. The same particles at the end as the uninterrupted run (parallel:
 #    both reconstructed, as the fixture was)
