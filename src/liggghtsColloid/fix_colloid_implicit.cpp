@@ -200,9 +200,17 @@ void FixColloidImplicit::findDragProperties()
 // component (the stationary variance of the recursion) and the
 // displacement over many steps is the sum of R/K: the diffusion
 // coefficient k_B T/K exactly. The written velocity (mean of two
-// half-step ones) has the variance k_B T/(m (1 + K h/(2 m))). Only the
-// drag's noise: lubrication's thermal forces between close pairs are not
-// modelled.
+// half-step ones) has the variance k_B T/(m (1 + K h/(2 m))).
+// Lubrication has its own noise: each lubricated pair (resistance c,
+// normal n) gets the impulses +xi n and -xi n, xi Gaussian with variance
+// 2 c k_B T h, so that the noise of all terms has the covariance
+// 2 k_B T h times the whole resistance matrix (fluctuation-dissipation
+// for the pairs too). With the backward-Euler lubrication the relative
+// motion of a pair then diffuses with k_B T over its resistance exactly
+// at any step (the displacement over many steps is the sum of the
+// impulses over the resistance), and its velocity has the equipartition
+// variance to first order in c h/m. A lubricated wall contact gives the
+// particle xi n alone, with the variance 2 c k_B T h of its resistance.
 void FixColloidImplicit::findBrownianMotion()
 {
     kT_ = 0.0;
@@ -265,6 +273,24 @@ void FixColloidImplicit::thermalImpulse(int tag, double K, double h, double *R) 
         const uint64_t a = mix64(key + 2*k), b = mix64(key + 2*k + 1);
         R[k] = sigma*std::sqrt(-2.0*std::log(unit(a)))*std::cos(twoPi*unit(b));
     }
+}
+
+// The lubrication noise xi of the pair of atoms a and b over the step h
+// (resistance c): a hash of the seed, both ids (in either order: a pair
+// across ranks draws the same number on both), the step and the kind of
+// solve; positive xi pushes the two apart. A wall contact: b = -1 - k for
+// the atom's k-th wall contact of the step.
+double FixColloidImplicit::pairThermalImpulse(int a, int b, double c, double h) const
+{
+    const uint64_t lo = static_cast<uint32_t>(std::min(a, b));
+    const uint64_t hi = static_cast<uint32_t>(std::max(a, b));
+    const uint64_t phase = h < update->dt ? 1 : 0;
+    uint64_t key = mix64(seed_ ^ 0x5bd1e9955bd1e995ULL);    // apart from the atoms' keys
+    key = mix64(key ^ ((lo << 32) | hi));
+    key = mix64(key ^ static_cast<uint64_t>(update->ntimestep));
+    key = mix64(key ^ phase);
+    const uint64_t u1 = mix64(key), u2 = mix64(key + 1);
+    return std::sqrt(2.0*c*kT_*h)*std::sqrt(-2.0*std::log(unit(u1)))*std::cos(6.283185307179586*unit(u2));
 }
 
 /* ---------------------------------------------------------------------- */
@@ -647,7 +673,8 @@ void FixColloidImplicit::solveSystem(double h, bool accumulateImpulse)
     }
     for (const PairTerm & t : pairs_)
     {
-        const double rel = h*t.c*(dot3(t.n, v[t.i]) - dot3(t.n, v[t.j]));
+        double rel = h*t.c*(dot3(t.n, v[t.i]) - dot3(t.n, v[t.j]));
+        if (thermal) rel -= pairThermalImpulse(tag[t.i], tag[t.j], t.c, h);
         addOuter(&blockA_[6*t.i], h*t.c, t.n);
         for (int k = 0; k < 3; k++) r_[3*t.i + k] -= rel*t.n[k];
         if (t.j < nlocal)
@@ -656,9 +683,11 @@ void FixColloidImplicit::solveSystem(double h, bool accumulateImpulse)
             for (int k = 0; k < 3; k++) r_[3*t.j + k] += rel*t.n[k];
         }
     }
+    if (thermal) wallsOf_.assign(nlocal, 0);
     for (const WallTerm & t : walls_)
     {
-        const double rel = h*t.c*(dot3(t.n, v[t.i]) - dot3(t.n, t.vWall));
+        double rel = h*t.c*(dot3(t.n, v[t.i]) - dot3(t.n, t.vWall));
+        if (thermal) rel -= pairThermalImpulse(tag[t.i], -1 - wallsOf_[t.i]++, t.c, h);
         addOuter(&blockA_[6*t.i], h*t.c, t.n);
         for (int k = 0; k < 3; k++) r_[3*t.i + k] -= rel*t.n[k];
     }

@@ -124,6 +124,7 @@ private:
     void findDragProperties();
     void findBrownianMotion();
     void thermalImpulse(int tag, double K, double h, double *R) const;
+    double pairThermalImpulse(int a, int b, double c, double h) const;
     void findGroups();
     void solvePair(const PairTerm & t);
     void solveDense(const int *members, int n, const int *pairIdx, int nPairs);
@@ -152,6 +153,7 @@ private:
     double kT_;
     unsigned long seed_;
     std::vector<double> thermal_;
+    std::vector<int> wallsOf_;      // wall contacts of each atom so far
 
     // step of the current solve [run units]
     double h_;

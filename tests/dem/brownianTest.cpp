@@ -23,6 +23,27 @@
       is resolved (dt = 0.01 tau): within 2 % (sampling error 0.3 %);
     reproducible: the same seed gives the same positions to the last bit,
       another seed other ones.
+
+    lubricatedPairDiffusion: 3375 pairs of spheres of R = 0.15 um (the slot
+      coater's) at a gap h0 = 5 nm, each lubricated (inner cut-off 1 nm,
+      outer 0.1 um: c(h0) = 6 pi mu R*^2 (1/h0 - 1/h_out), R* = R/2, 7 K)
+      and with drag K, pairs 1.5 um apart; dt = 1e-10 s (the relative
+      relaxation time m/(K + 2c) is 8.2 dt). After 0.1 us, the mean square
+      change of each pair's separation along its axis over lags of
+      0.05 us (5 windows) against the Langevin form
+      2 D (t - tau (1 - exp(-t/tau))) of the relative coordinate, with
+      D = k_B T/(K/2 + c(h)) and tau = m/(K + 2c(h)) at each pair's gap at
+      the start of the window, within 5 % (sampling error of the mean of
+      16 875: 1.1 %; the gaps spread by 0.3 nm, which the per-window
+      reference follows). Lubrication without its noise (the drag's
+      alone) gives D K/(K + 2c): 15 times too small; a noise variance off
+      by 2 gives twice the reference.
+    lubricatedWallDiffusion: the same for 3481 spheres at h0 = 5 nm above
+      a primitive wall (c_w = 6 pi mu R^2 (1/h - 1/h_out), 28.5 K): the
+      mean square change of the gap over 0.05 us against
+      2 D (t - tau (1 - exp(-t/tau))), D = k_B T/(K + c_w), tau =
+      m/(K + c_w), within 5 % (sampling error 1.1 %); without the wall's
+      noise it would be 29 times too small.
 \*---------------------------------------------------------------------------*/
 #include "liggghtsRun.H"
 #include "register_colloid_models.h"
@@ -31,6 +52,7 @@
 
 #include <cmath>
 #include <sstream>
+#include <string>
 #include <vector>
 
 using namespace demTest;
@@ -49,6 +71,37 @@ const double K = 6*pi*mu*R;
 const double tau = m/K;
 const double D = kT/K;          // um^2/us
 
+// Stokes drag K into fluid at rest, and Brownian motion with this seed
+std::string dragAndNoise(double Kd, long seed)
+{
+    std::ostringstream in;
+    in.precision(17);
+    in << "fix Ksl all property/atom Ksl scalar yes no no " << Kd << "\n"
+          "fix uf all property/atom uf vector yes no no 0 0 0\n"
+          "fix bT all property/global brownianTemperature scalar " << T << "\n"
+          "fix bS all property/global brownianSeed scalar " << seed << "\n";
+    return in.str();
+}
+
+// Lubrication (inner cut-off 1 nm, outer hOut [um]) between the spheres,
+// with the neighbour skin [um]
+std::string lubrication(double hOut, double skin)
+{
+    std::ostringstream in;
+    in.precision(17);
+    in << "fix m1 all property/global loadingStiffness peratomtypepair 2 1000 1000 1000 1000\n"
+          "fix m2 all property/global coefficientRestitution peratomtypepair 2 0.5 0.5 0.5 0.5\n"
+          "fix m3 all property/global coefficientFriction peratomtypepair 2 0.3 0.3 0.3 0.3\n"
+          "fix l1 all property/global liquidViscosity scalar " << mu << "\n"
+          "fix l2 all property/global lubricationInnerCutoff scalar 0.001\n"
+          "fix l3 all property/global lubricationOuterCutoff scalar " << hOut << "\n"
+          "neighbor " << skin << " bin\n"
+          "neigh_modify delay 0\n"
+          "pair_style gran model walton_braun tangential history cohesion colloid/lub\n"
+          "pair_coeff * *\n";
+    return in.str();
+}
+
 // 30^3 spheres 3 um apart, at rest, with drag into fluid at rest
 void freeSpheres(LiggghtsRun& run, double dt, long seed)
 {
@@ -63,10 +116,7 @@ void freeSpheres(LiggghtsRun& run, double dt, long seed)
           "velocity all set 0 0 0 units box\n"
           "timestep " << dt << "\n"
           "fix integrate all nve/sphere\n"
-          "fix Ksl all property/atom Ksl scalar yes no no " << K << "\n"
-          "fix uf all property/atom uf vector yes no no 0 0 0\n"
-          "fix bT all property/global brownianTemperature scalar " << T << "\n"
-          "fix bS all property/global brownianSeed scalar " << seed << "\n";
+       << dragAndNoise(K, seed);
     run.commands(in.str());
     colloidImplicitUpdate(run.instance());
     run.commands("run 0");
@@ -100,6 +150,30 @@ void velocityVariance(LiggghtsRun& run, double dt, double& written, double& half
         }
     written /= 3*n;
     half /= 3*n;
+}
+
+// pairs of lubricated spheres along x (lattice custom: a pair per point,
+// 1.5 um apart), with drag, at rest
+void lubricatedPairs(LiggghtsRun& run, double Rp, double h0, double dt, long seed)
+{
+    const double spacing = 1.5;
+    std::ostringstream in;
+    in.precision(17);
+    in << LiggghtsRun::header(12.0)
+       << "atom_modify sort 0 0.0\n"
+          "lattice custom " << spacing << " a1 1 0 0 a2 0 1 0 a3 0 0 1 basis 0 0 0 basis "
+       << (2*Rp + h0)/spacing << " 0 0\n"
+          // whole pairs: points -10.5 ... 10.5, partners to 10.805
+          "region pairs block -11 10.9 -11 10.9 -11 10.9 units box\n"
+          "create_atoms 1 region pairs\n"
+          "set group all diameter " << 2*Rp << " density " << rho << "\n"
+          "velocity all set 0 0 0 units box\n"
+       << lubrication(0.1, 0.05)
+       << "timestep " << dt << "\n"
+          "fix integrate all nve/sphere\n"
+       << dragAndNoise(6*pi*mu*Rp, seed);
+    run.commands(in.str());
+    run.commands("run 0");
 }
 
 } // namespace
@@ -174,4 +248,123 @@ TEST(brownian, reproducible)
     }
     EXPECT_TRUE(first[0] == first[1]) << "the same seed, other positions";
     EXPECT_FALSE(first[0] == first[2]) << "another seed, the same positions";
+}
+
+
+TEST(brownian, lubricatedPairDiffusion)
+{
+    const double Rp = 0.15, h0 = 0.005, hOut = 0.1;     // um
+    const double dt = 1e-4;                             // us
+    const double mp = rho*4.0/3.0*pi*Rp*Rp*Rp;
+    const double Kp = 6*pi*mu*Rp;
+    const double Rs = 0.5*Rp;
+    auto c = [&](double h) { return 6*pi*mu*Rs*Rs*(1/std::max(h, 0.001) - 1/hOut); };
+    std::printf("c(h0) = %.3g K, relative relaxation time %.3g us\n",
+                c(h0)/Kp, mp/(Kp + 2*c(h0)));
+
+    LiggghtsRun run;
+    lubricatedPairs(run, Rp, h0, dt, 20231);
+    const long n = run.nAtoms();
+    ASSERT_EQ(n % 2, 0);
+    // each pair: atoms 2k+1 (basis 0) and 2k+2 (basis 1), created point by
+    // point; checked through their separation
+    auto separation = [&](long k) { return run.x(2*k + 2)[0] - run.x(2*k + 1)[0]; };
+    for (long k = 0; k < n/2; k++)
+        ASSERT_NEAR(separation(k), 2*Rp + h0, 1e-9) << "pair " << k;
+
+    advance(run, 1000);
+    const int windows = 5;
+    const long lagSteps = 500;
+    const double lag = lagSteps*dt;
+    double msd = 0, reference = 0;
+    for (int w = 0; w < windows; w++)
+    {
+        std::vector<double> start(n/2);
+        for (long k = 0; k < n/2; k++)
+        {
+            start[k] = separation(k);
+            const double h = start[k] - 2*Rp;
+            const double D = kT/(0.5*Kp + c(h));
+            const double tauRel = mp/(Kp + 2*c(h));
+            reference += 2*D*(lag - tauRel*(1 - std::exp(-lag/tauRel)));
+        }
+        advance(run, lagSteps);
+        for (long k = 0; k < n/2; k++)
+        {
+            const double d = separation(k) - start[k];
+            msd += d*d;
+        }
+    }
+    msd /= windows*(n/2);
+    reference /= windows*(n/2);
+    std::printf("%ld pairs: mean square change of the separation over %g us %.4g um^2, "
+                "reference %.4g um^2 (%+.2f %%); without lubrication noise %.4g\n",
+                n/2, lag, msd, reference, 100*(msd/reference - 1),
+                reference*Kp/(Kp + 2*c(h0)));
+    EXPECT_NEAR(msd, reference, 0.05*reference);
+}
+
+
+TEST(brownian, lubricatedWallDiffusion)
+{
+    const double Rp = 0.15, h0 = 0.005, hOut = 0.1;     // um
+    const double dt = 1e-4;                             // us
+    const double mp = rho*4.0/3.0*pi*Rp*Rp*Rp;
+    const double Kp = 6*pi*mu*Rp;
+    auto c = [&](double h) { return 6*pi*mu*Rp*Rp*(1/std::max(h, 0.001) - 1/hOut); };
+    std::printf("c_w(h0) = %.3g K\n", c(h0)/Kp);
+
+    LiggghtsRun run;
+    std::ostringstream in;
+    in.precision(17);
+    in << LiggghtsRun::header(45.0)
+       << "atom_modify sort 0 0.0\n"
+          "lattice sc 1.5\n"
+          // one layer: 59 x 59 spheres at z = R + h0
+          "region layer block -44.9 44.9 -44.9 44.9 -0.1 0.1 units box\n"
+          "create_atoms 1 region layer\n"
+          "set group all diameter " << 2*Rp << " density " << rho << "\n"
+          "displace_atoms all move 0 0 " << Rp + h0 << " units box\n"
+          "velocity all set 0 0 0 units box\n"
+       << lubrication(hOut, 2*hOut)     // a primitive wall: skin >= 2 h_out
+       << "fix wall all wall/gran model walton_braun tangential history cohesion colloid/lub "
+          "primitive type 2 zplane 0\n"
+          "timestep " << dt << "\n"
+          "fix integrate all nve/sphere\n"
+       << dragAndNoise(Kp, 4711);
+    run.commands(in.str());
+    run.commands("run 0");
+    const long n = run.nAtoms();
+    for (long id = 1; id <= n; id++) ASSERT_NEAR(run.x(id)[2], Rp + h0, 1e-9);
+
+    advance(run, 1000);
+    const int windows = 5;
+    const long lagSteps = 500;
+    const double lag = lagSteps*dt;
+    double msd = 0, reference = 0;
+    for (int w = 0; w < windows; w++)
+    {
+        std::vector<double> start(n);
+        for (long id = 1; id <= n; id++)
+        {
+            start[id - 1] = run.x(id)[2];
+            const double h = start[id - 1] - Rp;
+            const double D = kT/(Kp + c(h));
+            const double tauRel = mp/(Kp + c(h));
+            reference += 2*D*(lag - tauRel*(1 - std::exp(-lag/tauRel)));
+        }
+        advance(run, lagSteps);
+        for (long id = 1; id <= n; id++)
+        {
+            const double d = run.x(id)[2] - start[id - 1];
+            msd += d*d;
+        }
+    }
+    msd /= windows*n;
+    reference /= windows*n;
+    std::printf("%ld spheres: mean square change of the gap over %g us %.4g um^2, "
+                "reference %.4g um^2 (%+.2f %%); without the wall's noise %.4g\n",
+                n, lag, msd, reference, 100*(msd/reference - 1),
+                reference*Kp/(Kp + c(h0)));
+    EXPECT_NEAR(msd, reference, 0.05*reference);
 }
