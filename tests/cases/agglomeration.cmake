@@ -73,3 +73,12 @@ add_test(NAME case.agglomeration.slotCoaterPeriodicFill
 set_tests_properties(case.agglomeration.slotCoaterPeriodicFill PROPERTIES
     TIMEOUT 60 LABELS "case;agglomeration;slotCoater" ENVIRONMENT PYTHONDONTWRITEBYTECODE=1
     FIXTURES_REQUIRED slotCoater_serial)
+
+# agglomeration.barrier: colloidBarrier (the DLVO barrier, the salt and the
+# zeta potential at which it vanishes) against the closed forms of the
+# model (checkBarrier.py)
+add_test(NAME case.agglomeration.barrier
+    COMMAND python3 ${agglomerationDir}/checkBarrier.py $<TARGET_FILE:colloidBarrier>)
+set_tests_properties(case.agglomeration.barrier PROPERTIES
+    TIMEOUT 60 LABELS "case;agglomeration" ENVIRONMENT PYTHONDONTWRITEBYTECODE=1
+    PASS_REGULAR_EXPRESSION "PASS")

@@ -1,0 +1,319 @@
+/*---------------------------------------------------------------------------*\
+    colloidBarrier: the DLVO interaction energy of two particles (or a
+    particle and a charged wall) as the DEM sees it, its barrier against
+    agglomeration in k_B T, and the salt concentration at which the
+    barrier falls to a given height (the critical coagulation
+    concentration, CCC, for a height of 0), or the zeta potential at
+    which it does at the given salt (in a real dispersion salt and pH move
+    the zeta potential too: the two answers bracket what a chemistry
+    change does).
+
+    Why: whether a dispersion agglomerates is decided by the double-layer
+    barrier a pair must cross to reach the van der Waals minimum; a
+    barrier of 15-25 k_B T or more keeps it stable for the seconds of a
+    process, one of a few k_B T lets Brownian motion and shear push pairs
+    over it.  The tool answers "what chemistry keeps my dispersion
+    stable" before a run, with the project's own force kernels and the
+    run's cut-offs (src/colloidModels: vanDerWaals.H, doubleLayer.H).
+
+    The energy is the work against the DEM's force, U(h) = integral from h
+    to the largest outer cut-off of F(h') dh' (the forces are force-shifted
+    to zero at their outer cut-offs and held constant below their inner
+    ones), by the trapezoidal rule on 40 000 geometrically spaced gaps (its
+    error is far below 1e-4 k_B T here).
+
+    Usage (SI units; defaults in brackets):
+      colloidBarrier -radius R [-radius2 R2 | -wall] -hamaker A
+          -zeta z1 [-zeta2 z2 (= z1)] -salt c [mol/m^3 = mM]
+          [-valence 1] [-temperature 298.15] [-permittivity 78.4]
+          [-vdwOuterCutoff 1e-7] [-doubleLayerOuterCutoff inf]
+          [-innerCutoff 4e-10] [-form linearSuperposition|hoggHealyFuerstenau]
+          [-ccc height_kT] [-zetaAt height_kT] [-csv file]
+    Prints key = value lines: debyeLength, barrier (k_B T) and barrierGap,
+    the energy at contact (the inner cut-off), the secondary minimum;
+    with -ccc the salt concentration at which the barrier is height_kT
+    (bisection in log c over 1e-4 ... 1e4 mol/m^3); with -zetaAt the
+    zeta potential (of both surfaces, with the sign given) at which it
+    is height_kT at the given salt (bisection over 0 ... 0.3 V); with
+    -csv the curve (gap, force, energy).  Bad input: a message naming the option, its
+    value and the allowed range, and exit 1.
+\*---------------------------------------------------------------------------*/
+#include "constants.H"
+#include "doubleLayer.H"
+#include "pairGeometry.H"
+#include "vanDerWaals.H"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <fstream>
+#include <iostream>
+#include <limits>
+#include <map>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+namespace
+{
+
+struct Options
+{
+    double R1 = -1, R2 = -1, hamaker = 0, zeta1 = 0, zeta2 = std::nan(""), salt = -1;
+    int valence = 1;
+    double temperature = 298.15, permittivity = 78.4;
+    double vdwOuter = 1e-7, dlOuter = std::numeric_limits<double>::infinity();
+    double inner = 0.4e-9;
+    colloid::DoubleLayerForm form = colloid::DoubleLayerForm::linearSuperposition;
+    bool wall = false;
+    double cccHeight = std::nan("");
+    double zetaHeight = std::nan("");
+    std::string csv;
+};
+
+[[noreturn]] void usage(const std::string& why)
+{
+    std::cerr << "colloidBarrier: " << why << "\n"
+        "usage: colloidBarrier -radius R [-radius2 R2 | -wall] -hamaker A -zeta z1 [-zeta2 z2]\n"
+        "           -salt c [-valence z] [-temperature T] [-permittivity eps_r]\n"
+        "           [-vdwOuterCutoff h] [-doubleLayerOuterCutoff h] [-innerCutoff h]\n"
+        "           [-form linearSuperposition|hoggHealyFuerstenau] [-ccc height_kT] [-csv file]\n"
+        "       (SI units: m, J, V, mol/m^3 = mM, K)\n";
+    std::exit(1);
+}
+
+double number(const std::string& option, const char* text)
+{
+    char* end = nullptr;
+    const double v = std::strtod(text, &end);
+    if (end == text || *end != '\0' || std::isnan(v))
+    {
+        usage("option " + option + ": '" + text + "' is not a number");
+    }
+    return v;
+}
+
+Options parse(int argc, char** argv)
+{
+    Options o;
+    for (int k = 1; k < argc; k++)
+    {
+        const std::string a = argv[k];
+        if (a == "-wall") { o.wall = true; continue; }
+        if (k + 1 >= argc) usage("option " + a + " needs a value");
+        const char* v = argv[++k];
+        if (a == "-radius") o.R1 = number(a, v);
+        else if (a == "-radius2") o.R2 = number(a, v);
+        else if (a == "-hamaker") o.hamaker = number(a, v);
+        else if (a == "-zeta") o.zeta1 = number(a, v);
+        else if (a == "-zeta2") o.zeta2 = number(a, v);
+        else if (a == "-salt") o.salt = number(a, v);
+        else if (a == "-valence") o.valence = static_cast<int>(number(a, v));
+        else if (a == "-temperature") o.temperature = number(a, v);
+        else if (a == "-permittivity") o.permittivity = number(a, v);
+        else if (a == "-vdwOuterCutoff") o.vdwOuter = number(a, v);
+        else if (a == "-doubleLayerOuterCutoff") o.dlOuter = number(a, v);
+        else if (a == "-innerCutoff") o.inner = number(a, v);
+        else if (a == "-ccc") o.cccHeight = number(a, v);
+        else if (a == "-zetaAt") o.zetaHeight = number(a, v);
+        else if (a == "-csv") o.csv = v;
+        else if (a == "-form")
+        {
+            const std::string f = v;
+            if (f == "linearSuperposition") o.form = colloid::DoubleLayerForm::linearSuperposition;
+            else if (f == "hoggHealyFuerstenau") o.form = colloid::DoubleLayerForm::hoggHealyFuerstenau;
+            else usage("option -form: '" + f + "'; allowed: linearSuperposition, hoggHealyFuerstenau");
+        }
+        else usage("unknown option '" + a + "'");
+    }
+    if (!(o.R1 > 0)) usage("option -radius: must be given, > 0 [m]");
+    if (o.wall && o.R2 > 0) usage("give -radius2 or -wall, not both");
+    if (o.wall) o.R2 = colloid::wallRadius;
+    else if (o.R2 < 0) o.R2 = o.R1;
+    else if (!(o.R2 > 0)) usage("option -radius2: must be > 0 [m]");
+    if (!(o.salt > 0)) usage("option -salt: must be given, > 0 [mol/m^3]");
+    if (std::isnan(o.zeta2)) o.zeta2 = o.zeta1;
+    if (!std::isnan(o.zetaHeight) && (o.zeta2 != o.zeta1 || o.zeta1 == 0))
+        usage("option -zetaAt: needs one non-zero -zeta for both surfaces (its sign is kept)");
+    return o;
+}
+
+// The pair's force [N] at gap h [m] at salt concentration c: the kernels
+// with the run's cut-offs
+struct Pair
+{
+    colloid::VanDerWaals vdw;
+    colloid::DoubleLayer dl;
+    double R1, R2;
+
+    static colloid::VanDerWaalsParameters vdwParameters(const Options& o)
+    {
+        colloid::VanDerWaalsParameters p;
+        p.hamakerConstant = o.hamaker;
+        p.innerCutoff = o.inner;
+        p.outerCutoff = o.vdwOuter;
+        return p;
+    }
+    static colloid::DoubleLayerParameters dlParameters(const Options& o, double c)
+    {
+        colloid::DoubleLayerParameters p;
+        p.electrolyte.concentration = c;
+        p.electrolyte.valence = o.valence;
+        p.electrolyte.temperature = o.temperature;
+        p.electrolyte.relativePermittivity = o.permittivity;
+        p.zeta1 = o.zeta1;
+        p.zeta2 = o.zeta2;
+        p.form = o.form;
+        p.innerCutoff = o.inner;
+        p.outerCutoff = o.dlOuter;
+        return p;
+    }
+    Pair(const Options& o, double c)
+    :
+        vdw(vdwParameters(o)), dl(dlParameters(o, c)), R1(o.R1), R2(o.R2)
+    {}
+
+    double force(double h) const { return vdw.force(R1, R2, h) + dl.force(R1, R2, h); }
+};
+
+struct Curve
+{
+    std::vector<double> h, F, U;    // gap [m], force [N], energy [J]
+};
+
+// U(h) = integral of F from h to the end of the range, on gaps from half
+// the inner cut-off to the end (geometric), where F vanishes (or to 30
+// Debye lengths and 1 um when an outer cut-off is infinite)
+Curve energy(const Pair& p, const Options& o)
+{
+    double end = std::max(o.vdwOuter, o.dlOuter);
+    if (!std::isfinite(end)) end = std::max({30*p.dl.debyeLength(), 1e-6, std::isfinite(o.vdwOuter) ? o.vdwOuter : 0.0});
+    const int n = 40000;
+    const double start = 0.5*o.inner;
+    Curve c;
+    c.h.resize(n);
+    c.F.resize(n);
+    c.U.assign(n, 0.0);
+    for (int k = 0; k < n; k++)
+    {
+        c.h[k] = start*std::pow(end/start, double(k)/(n - 1));
+        c.F[k] = p.force(c.h[k]);
+    }
+    for (int k = n - 2; k >= 0; k--)
+    {
+        c.U[k] = c.U[k + 1] + 0.5*(c.F[k] + c.F[k + 1])*(c.h[k + 1] - c.h[k]);
+    }
+    return c;
+}
+
+struct Barrier
+{
+    double height = 0, gap = 0;             // the largest U beyond the inner cut-off
+    double contact = 0;                     // U at the inner cut-off
+    double secondary = 0, secondaryGap = 0; // the lowest U beyond the barrier
+};
+
+Barrier barrier(const Curve& c, const Options& o)
+{
+    Barrier b;
+    b.height = -std::numeric_limits<double>::infinity();
+    std::size_t top = 0;
+    bool first = true;
+    for (std::size_t k = 0; k < c.h.size(); k++)
+    {
+        if (c.h[k] < o.inner) continue;
+        if (first) { b.contact = c.U[k]; first = false; }
+        if (c.U[k] > b.height) { b.height = c.U[k]; b.gap = c.h[k]; top = k; }
+    }
+    for (std::size_t k = top; k < c.h.size(); k++)
+    {
+        if (c.U[k] < b.secondary) { b.secondary = c.U[k]; b.secondaryGap = c.h[k]; }
+    }
+    return b;
+}
+
+} // namespace
+
+
+int main(int argc, char** argv)
+{
+    const Options o = parse(argc, argv);
+    const double kT = colloid::constants::boltzmann*o.temperature;
+    try
+    {
+        const Pair p(o, o.salt);
+        const Curve c = energy(p, o);
+        const Barrier b = barrier(c, o);
+        std::printf("debyeLength = %.6g m\n", p.dl.debyeLength());
+        std::printf("barrier = %.6g kT\nbarrierGap = %.6g m\n", b.height/kT, b.gap);
+        std::printf("contactEnergy = %.6g kT\n", b.contact/kT);
+        std::printf("secondaryMinimum = %.6g kT\nsecondaryMinimumGap = %.6g m\n",
+                    b.secondary/kT, b.secondaryGap);
+        if (!o.csv.empty())
+        {
+            std::ofstream out(o.csv);
+            out.precision(10);
+            out << "gap,force,energy_kT\n";
+            for (std::size_t k = 0; k < c.h.size(); k += 20)
+                out << c.h[k] << ',' << c.F[k] << ',' << c.U[k]/kT << '\n';
+            if (!out) { std::cerr << "colloidBarrier: cannot write " << o.csv << "\n"; return 1; }
+        }
+        if (!std::isnan(o.cccHeight))
+        {
+            // the barrier falls as salt screens the double layer
+            auto height = [&](double salt)
+            {
+                const Pair q(o, salt);
+                return barrier(energy(q, o), o).height/kT;
+            };
+            double lo = 1e-4, hi = 1e4;
+            if (height(lo) < o.cccHeight || height(hi) > o.cccHeight)
+            {
+                std::cerr << "colloidBarrier: option -ccc: a barrier of " << o.cccHeight
+                          << " kT is not reached between 1e-4 and 1e4 mol/m^3 of salt\n";
+                return 1;
+            }
+            for (int it = 0; it < 60; it++)
+            {
+                const double mid = std::sqrt(lo*hi);
+                (height(mid) > o.cccHeight ? lo : hi) = mid;
+            }
+            const double ccc = std::sqrt(lo*hi);
+            std::printf("saltAtBarrier = %.6g mol/m^3\nbarrierHeight = %.6g kT\n"
+                        "debyeLengthAtBarrier = %.6g m\n",
+                        ccc, o.cccHeight, Pair(o, ccc).dl.debyeLength());
+        }
+        if (!std::isnan(o.zetaHeight))
+        {
+            // the barrier grows with |zeta|
+            const double sign = o.zeta1 > 0 ? 1 : -1;
+            auto height = [&](double magnitude)
+            {
+                Options q = o;
+                q.zeta1 = q.zeta2 = sign*magnitude;
+                return barrier(energy(Pair(q, o.salt), q), q).height/kT;
+            };
+            double lo = 0, hi = 0.3;
+            if (height(hi) < o.zetaHeight)
+            {
+                std::cerr << "colloidBarrier: option -zetaAt: a barrier of " << o.zetaHeight
+                          << " kT is not reached with |zeta| up to 0.3 V\n";
+                return 1;
+            }
+            for (int it = 0; it < 60; it++)
+            {
+                const double mid = 0.5*(lo + hi);
+                (height(mid) > o.zetaHeight ? hi : lo) = mid;
+            }
+            std::printf("zetaAtBarrier = %.6g V\nbarrierHeight = %.6g kT\n",
+                        sign*0.5*(lo + hi), o.zetaHeight);
+        }
+    }
+    catch (const std::invalid_argument& e)
+    {
+        std::cerr << "colloidBarrier: " << e.what() << "\n";
+        return 1;
+    }
+    return 0;
+}

@@ -1,0 +1,107 @@
+#!/usr/bin/env python3
+"""colloidBarrier against the closed forms of its model (label agglomeration).
+
+Without cut-offs (outer cut-offs at 1 mm for van der Waals, whose
+force-shift there changes the energy by 3e-5 kT, and 10 um for the
+double layer, exp(-1000)) the DEM's pair energy is the linear-superposition double layer with
+Derjaguin's van der Waals (seed 002 eqs 10-11):
+    U(h) = B Gamma^2 exp(-kappa h) - A R*/(6 h),
+    B = 64 pi R* eps (k_B T/(z e))^2,  Gamma = tanh(z e zeta/(4 k_B T)),
+    kappa^2 = 2 N_A e^2 z^2 c/(eps k_B T),
+so that
+  - the barrier is the maximum of U, found here by golden section;
+  - the barrier vanishes (U = 0 and dU/dh = 0 at one gap) where
+    kappa h = 1 and B Gamma^2/e = A R* kappa/6, i.e. at the salt
+    concentration c with kappa = 6 B Gamma^2/(e A R*) (the critical
+    coagulation concentration), or at the zeta potential with
+    Gamma^2 = e A R* kappa/(6 B) at a given salt.
+Asserted: the barrier of the slot coater's particles (R = 0.15 um,
+zeta = -41 mV, 1 mM, A = 0.43e-20 J) within 0.1 % and its gap within 2 %;
+the CCC of a strongly attracting pair (A = 1e-19 J, zeta = -20 mV, Debye
+length 13 nm there) within 0.1 %; the zeta at which the slot coater's
+barrier vanishes within 0.1 % (measured: 5e-5 or better; the tool's
+integration and bisection), and bad input exits 1 naming the option.
+
+    checkBarrier.py colloidBarrier
+"""
+import math
+import subprocess
+import sys
+
+tool = sys.argv[1]
+kB, e, NA, eps0 = 1.380649e-23, 1.602176634e-19, 6.02214076e23, 8.8541878128e-12
+T, epsr = 298.15, 78.4
+eps, kT = epsr*eps0, kB*298.15
+NONE = ['-vdwOuterCutoff', '1e-3', '-doubleLayerOuterCutoff', '1e-5']
+failed = []
+
+
+def run(*args):
+    out = subprocess.run([tool] + [str(a) for a in args], capture_output=True, text=True)
+    if out.returncode != 0:
+        raise SystemExit('FAIL: colloidBarrier %s: %s' % (' '.join(map(str, args)), out.stderr))
+    return dict((k.strip(), float(v.split()[0])) for k, v in
+                (line.split('=', 1) for line in out.stdout.splitlines()))
+
+
+def check(name, value, reference, tolerance):
+    error = value/reference - 1
+    ok = abs(error) <= tolerance
+    print('%-32s %.6g, closed form %.6g (%+.3f %%, allowed %g %%)%s'
+          % (name, value, reference, 100*error, 100*tolerance, '' if ok else '  FAIL'))
+    if not ok:
+        failed.append(name)
+
+
+def kappa(c):
+    return math.sqrt(2*NA*e*e*c/(eps*kT))
+
+
+def prefactor(Rs, zeta):
+    return 64*math.pi*Rs*eps*(kT/e)**2*math.tanh(e*zeta/(4*kT))**2
+
+
+# 1. the slot coater's barrier
+R, A, zeta, c = 0.15e-6, 0.43e-20, -0.041, 1.0
+Rs = R/2
+k, B = kappa(c), prefactor(Rs, zeta)
+U = lambda h: B*math.exp(-k*h) - A*Rs/(6*h)
+lo, hi = 0.4e-9, 50e-9
+g = (math.sqrt(5) - 1)/2
+for _ in range(200):
+    a, b = hi - g*(hi - lo), lo + g*(hi - lo)
+    if U(a) > U(b):
+        hi = b
+    else:
+        lo = a
+hMax = 0.5*(lo + hi)
+r = run('-radius', R, '-hamaker', A, '-zeta', zeta, '-salt', c, *NONE)
+check('Debye length [m]', r['debyeLength'], 1/k, 1e-6)
+check('barrier [kT]', r['barrier'], U(hMax)/kT, 0.001)
+check('barrier gap [m]', r['barrierGap'], hMax, 0.02)
+
+# 2. the critical coagulation concentration of a strongly attracting pair
+A2, zeta2 = 1e-19, -0.020
+kc = 6*prefactor(Rs, zeta2)/(math.e*A2*Rs)
+cc = kc*kc*eps*kT/(2*NA*e*e)
+r = run('-radius', R, '-hamaker', A2, '-zeta', zeta2, '-salt', c, '-ccc', 0, *NONE)
+check('CCC [mol/m^3]', r['saltAtBarrier'], cc, 0.001)
+
+# 3. the zeta potential at which the slot coater's barrier vanishes at 1 mM
+gamma = math.sqrt(math.e*A*Rs*k/(6*prefactor(Rs, 1.0)/math.tanh(e/(4*kT))**2))
+zc = -4*kT/e*math.atanh(gamma)
+r = run('-radius', R, '-hamaker', A, '-zeta', zeta, '-salt', c, '-zetaAt', 0, *NONE)
+check('zeta at no barrier [V]', r['zetaAtBarrier'], zc, 0.001)
+
+# 4. bad input
+bad = subprocess.run([tool] + [str(a) for a in ('-radius', R, '-hamaker', A, '-zeta', zeta, '-salt', -1)],
+                     capture_output=True, text=True)
+if bad.returncode != 1 or '-salt' not in bad.stderr:
+    print('FAIL: -salt -1 gave exit %d, "%s"' % (bad.returncode, bad.stderr.strip()))
+    failed.append('bad input')
+else:
+    print('bad input: ' + bad.stderr.splitlines()[0])
+
+if failed:
+    raise SystemExit('FAIL: ' + ', '.join(failed))
+print('PASS')
