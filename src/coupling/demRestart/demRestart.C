@@ -322,7 +322,12 @@ Foam::string Foam::demRestart::write
         }
     }
 
-    rmDir(tmp);
+    // (a left-over of an interrupted write; usually there is none, and
+    // rmDir would warn at every write)
+    if (isDir(tmp))
+    {
+        rmDir(tmp);
+    }
     if (!mkDir(tmp))
     {
         problem = "cannot create " + tmp;
@@ -352,8 +357,12 @@ Foam::string Foam::demRestart::write
     dem.run(0);
     restoreLastStep(dem, true);
 
-    // Every rank's files are complete: replace the time's DEM state
-    rmDir(dir);
+    // Every rank's files are complete: replace the time's DEM state (if a
+    // resumed run passes a time written before)
+    if (isDir(dir))
+    {
+        rmDir(dir);
+    }
     if (!mv(tmp, dir))
     {
         problem = "cannot rename " + tmp + " to " + dir;
