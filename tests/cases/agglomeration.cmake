@@ -82,3 +82,11 @@ add_test(NAME case.agglomeration.barrier
 set_tests_properties(case.agglomeration.barrier PROPERTIES
     TIMEOUT 60 LABELS "case;agglomeration" ENVIRONMENT PYTHONDONTWRITEBYTECODE=1
     PASS_REGULAR_EXPRESSION "PASS")
+
+# agglomeration.study: the study's driver on a copy of the slot coater (one
+# case, two coupling steps at the study's size) and its report
+# (runStudyTest.sh)
+add_test(NAME case.agglomeration.study
+    COMMAND ${agglomerationDir}/runStudyTest.sh ${agglomerationWork}/study)
+set_tests_properties(case.agglomeration.study PROPERTIES
+    TIMEOUT 600 LABELS "case;agglomeration" PASS_REGULAR_EXPRESSION "PASS")

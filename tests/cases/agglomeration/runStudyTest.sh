@@ -1,0 +1,54 @@
+#!/bin/bash
+# The agglomeration study's driver (tutorials/slotCoater/Allstudy) on a copy
+# of the tutorial: one case (isoelectricBrownian) for two coupling steps at
+# the study's size, then the report.  Asserted: the case holds the study's
+# settings (span 5 um, zeta 0, DEM step 4e-10 s, 25 steps per coupling
+# step, Brownian motion on, a write every 5 us), the run reaches its end
+# with the fill of the 5 um span (between 1.9e5 and 2.1e5 particles, 0.05
+# of the gap and the slot), a second set-up of the same case without
+# -resume stops naming the folder, and the report writes its table (a row
+# for the case) and its plot.
+#
+# usage: runStudyTest.sh workDir
+set -e
+export PYTHONDONTWRITEBYTECODE=1
+work=$1
+here=$(cd "$(dirname "$0")" && pwd)
+set +u
+source "$here/../../../etc/bashrc"
+set -u
+
+rm -rf "$work"
+mkdir -p "$work"
+cp -r "$COLLOIDFOAM_DIR/tutorials/slotCoater" "$work/"
+cd "$work/slotCoater"
+rm -rf study results
+
+fail() { echo "FAIL: $*"; exit 1; }
+
+./Allstudy -endTime 2e-8 isoelectricBrownian > allstudy.out 2>&1 \
+    || { cat allstudy.out; tail -20 study/isoelectricBrownian.log; fail "Allstudy"; }
+case=study/isoelectricBrownian
+value() { awk -v k="$2" '$1 == k { sub(";", "", $2); print $2; exit }' "$1"; }
+[ "$(value $case/system/slotCoaterParameters span)" = 5e-6 ] || fail "span"
+[ "$(value $case/system/slotCoaterParameters zetaPotential)" = 0 ] || fail "zetaPotential"
+[ "$(value $case/constant/couplingProperties timeStep)" = 4e-10 ] || fail "DEM timeStep"
+[ "$(value $case/constant/couplingProperties couplingInterval)" = 25 ] || fail "couplingInterval"
+[ "$(value $case/system/controlDict writeInterval)" = 500 ] || fail "writeInterval"
+grep -q "^Brownian motion: 293.15 K, seed 1" $case/log.colloidDEMFoam || fail "no Brownian motion"
+grep -q "^variable zetaPotential equal 0$" $case/DEM/slotCoater.liggghts || fail "zeta not written for the DEM"
+[ -f $case/2e-08/uniform/colloidCoupling ] || fail "the run did not reach 2e-08"
+n=$(awk '/^Particles: present/ { print $3 }' $case/log.colloidDEMFoam | tail -1)
+echo "particles present at the end: $n"
+awk -v n="$n" 'BEGIN { exit !(n >= 1.9e5 && n <= 2.1e5) }' || fail "$n particles, not the 5 um span's 2.0e5"
+
+if ./Allstudy -endTime 2e-8 isoelectricBrownian > again.out 2>&1
+then
+    fail "a second set-up of the case did not stop"
+fi
+grep -q "study/isoelectricBrownian exists: add -resume" again.out || { cat again.out; fail "message"; }
+
+./Allstudy -report > report.out 2>&1 || { cat report.out; fail "report"; }
+grep -q "^| isoelectricBrownian | 0.02 |" results/summary.md || { cat results/summary.md; fail "summary row"; }
+[ -s results/contacts.png ] || fail "no contacts.png"
+echo PASS
