@@ -78,7 +78,8 @@ struct Options
         "usage: colloidBarrier -radius R [-radius2 R2 | -wall] -hamaker A -zeta z1 [-zeta2 z2]\n"
         "           -salt c [-valence z] [-temperature T] [-permittivity eps_r]\n"
         "           [-vdwOuterCutoff h] [-doubleLayerOuterCutoff h] [-innerCutoff h]\n"
-        "           [-form linearSuperposition|hoggHealyFuerstenau] [-ccc height_kT] [-csv file]\n"
+        "           [-form linearSuperposition|hoggHealyFuerstenau] [-ccc height_kT] [-zetaAt height_kT]\n"
+        "           [-csv file]\n"
         "       (SI units: m, J, V, mol/m^3 = mM, K)\n";
     std::exit(1);
 }
@@ -109,7 +110,12 @@ Options parse(int argc, char** argv)
         else if (a == "-zeta") o.zeta1 = number(a, v);
         else if (a == "-zeta2") o.zeta2 = number(a, v);
         else if (a == "-salt") o.salt = number(a, v);
-        else if (a == "-valence") o.valence = static_cast<int>(number(a, v));
+        else if (a == "-valence")
+        {
+            const double z = number(a, v);
+            if (z != std::floor(z)) usage("option -valence: '" + std::string(v) + "' is not an integer (1..4)");
+            o.valence = static_cast<int>(z);
+        }
         else if (a == "-temperature") o.temperature = number(a, v);
         else if (a == "-permittivity") o.permittivity = number(a, v);
         else if (a == "-vdwOuterCutoff") o.vdwOuter = number(a, v);
