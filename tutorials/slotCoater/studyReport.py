@@ -70,6 +70,11 @@ def main(studyDir, resultsDir):
     for name, (t, pairs, agglomerated) in series.items():
         a.plot(t, pairs, label=name)
         b.plot(t, agglomerated, label=name)
+    # counts: from 0, at least to 1 (a case without contacts is a flat line
+    # at the bottom, not in the middle of a symmetric range)
+    top = max([1] + [max(p + g) for _, p, g in series.values() if p])
+    for axis in (a, b):
+        axis.set_ylim(0, 1.05*top)
     a.set_xlabel("time [µs]")
     a.set_ylabel("particle-particle contacts")
     b.set_xlabel("time [µs]")
