@@ -3,7 +3,8 @@
 # of the tutorial: one case (isoelectricBrownian) for two coupling steps at
 # the study's size, then the report.  Asserted: the case holds the study's
 # settings (span 5 um, zeta 0, DEM step 4e-10 s, 25 steps per coupling
-# step, Brownian motion on, a write every 5 us), the run reaches its end
+# step, Brownian motion on, a write every 5 us), an unknown case name
+# stops everything before a run, the run reaches its end
 # with the fill of the 5 um span (between 1.9e5 and 2.1e5 particles, 0.05
 # of the gap and the slot), a second set-up of the same case without
 # -resume stops naming the folder, and the report writes its table (a row
@@ -25,6 +26,14 @@ cd "$work/slotCoater"
 rm -rf study results
 
 fail() { echo "FAIL: $*"; exit 1; }
+
+# an unknown case stops before any run
+if ./Allstudy -endTime 2e-8 isoelectricBrownian noSuchCase > unknown.out 2>&1
+then
+    fail "an unknown case was accepted"
+fi
+grep -q "unknown case 'noSuchCase'" unknown.out || { cat unknown.out; fail "message"; }
+[ ! -d study ] || fail "a case was set up before the unknown one was refused"
 
 ./Allstudy -endTime 2e-8 isoelectricBrownian > allstudy.out 2>&1 \
     || { cat allstudy.out; tail -20 study/isoelectricBrownian.log; fail "Allstudy"; }
