@@ -2,6 +2,26 @@
 #include "volPointInterpolation.H"
 #include "polyMeshTetDecomposition.H"
 
+namespace
+{
+
+// Six times the signed volume of the tet (cc, a, b, c) [m^3]; zero when the
+// tet is flat relative to its own edge lengths (scale free)
+Foam::scalar tetDeterminant
+(
+    const Foam::vector& e1,
+    const Foam::vector& e2,
+    const Foam::vector& e3
+)
+{
+    const Foam::scalar D = e1 & (e2 ^ e3);
+    const Foam::scalar scale = Foam::mag(e1)*Foam::mag(e2)*Foam::mag(e3);
+    return (Foam::mag(D) <= 1e-12*scale) ? 0 : D;
+}
+
+} // End anonymous namespace
+
+
 Foam::cellPointInterpolator::cellPointInterpolator
 (
     const volVectorField& field
@@ -9,8 +29,39 @@ Foam::cellPointInterpolator::cellPointInterpolator
 :
     mesh_(field.mesh()),
     field_(field),
-    pointField_(volPointInterpolation::New(field.mesh()).interpolate(field))
-{}
+    pointField_(volPointInterpolation::New(field.mesh()).interpolate(field)),
+    tetStart_(mesh_.nCells() + 1, 0),
+    tetTri_()
+{
+    const pointField& points = mesh_.points();
+    const vectorField& C = mesh_.cellCentres();
+
+    DynamicList<FixedList<label, 3>> tris(12*mesh_.nCells());
+    for (label celli = 0; celli < mesh_.nCells(); ++celli)
+    {
+        tetStart_[celli] = tris.size();
+        for
+        (
+            const tetIndices& tetIs
+          : polyMeshTetDecomposition::cellTetIndices(mesh_, celli)
+        )
+        {
+            const triFace tri = tetIs.faceTriIs(mesh_);
+            const scalar D = tetDeterminant
+            (
+                points[tri[0]] - C[celli],
+                points[tri[1]] - C[celli],
+                points[tri[2]] - C[celli]
+            );
+            if (D != 0)
+            {
+                tris.append(FixedList<label, 3>({tri[0], tri[1], tri[2]}));
+            }
+        }
+    }
+    tetStart_[mesh_.nCells()] = tris.size();
+    tetTri_.transfer(tris);
+}
 
 
 void Foam::cellPointInterpolator::update()
@@ -25,34 +76,24 @@ Foam::vector Foam::cellPointInterpolator::interpolate
     const label celli
 ) const
 {
-    const List<tetIndices> tets =
-        polyMeshTetDecomposition::cellTetIndices(mesh_, celli);
-
     const pointField& points = mesh_.points();
     const point& cc = mesh_.cellCentres()[celli];
+    const vector r = p - cc;
 
-    // The tet whose smallest barycentric coordinate is largest contains p
-    // (or is nearest to it when p sits on the cell boundary)
+    // The tet whose smallest barycentric coordinate is largest: the first
+    // with none negative holds p; else the nearest (p on the cell boundary,
+    // or outside it by round-off)
     scalar bestMin = -GREAT;
     FixedList<scalar, 4> bestW(scalar(0));
-    triFace bestTri;
+    label best = -1;
 
-    for (const tetIndices& tetIs : tets)
+    for (label t = tetStart_[celli]; t < tetStart_[celli + 1]; ++t)
     {
-        const triFace tri = tetIs.faceTriIs(mesh_);
+        const FixedList<label, 3>& tri = tetTri_[t];
         const vector e1 = points[tri[0]] - cc;
         const vector e2 = points[tri[1]] - cc;
         const vector e3 = points[tri[2]] - cc;
-        const vector r = p - cc;
-
-        // Six times the signed volume; skip tets that are flat relative
-        // to their own edge lengths (scale free)
         const scalar D = e1 & (e2 ^ e3);
-        const scalar scale = mag(e1)*mag(e2)*mag(e3);
-        if (mag(D) <= 1e-12*scale)
-        {
-            continue;
-        }
 
         FixedList<scalar, 4> w;
         w[1] = (r & (e2 ^ e3))/D;
@@ -65,19 +106,24 @@ Foam::vector Foam::cellPointInterpolator::interpolate
         {
             bestMin = wMin;
             bestW = w;
-            bestTri = tri;
+            best = t;
+            if (wMin >= 0)
+            {
+                break;
+            }
         }
     }
 
-    if (bestMin == -GREAT)
+    if (best < 0)
     {
         // Every tet flat: a degenerate cell, fall back to its value
         return field_[celli];
     }
 
+    const FixedList<label, 3>& tri = tetTri_[best];
     return
         bestW[0]*field_[celli]
-      + bestW[1]*pointField_[bestTri[0]]
-      + bestW[2]*pointField_[bestTri[1]]
-      + bestW[3]*pointField_[bestTri[2]];
+      + bestW[1]*pointField_[tri[0]]
+      + bestW[2]*pointField_[tri[1]]
+      + bestW[3]*pointField_[tri[2]];
 }
