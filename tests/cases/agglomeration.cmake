@@ -75,8 +75,9 @@ set_tests_properties(case.agglomeration.slotCoaterPeriodicFill PROPERTIES
     FIXTURES_REQUIRED slotCoater_serial)
 
 # agglomeration.barrier: colloidBarrier (the DLVO barrier, the salt and the
-# zeta potential at which it vanishes) against the closed forms of the
-# model (checkBarrier.py)
+# zeta potential at which it vanishes; Fuchs' stability ratio and the
+# Brownian collision rate with the DEM's lubrication) against the closed
+# forms of the model (checkBarrier.py)
 add_test(NAME case.agglomeration.barrier
     COMMAND python3 ${agglomerationDir}/checkBarrier.py $<TARGET_FILE:colloidBarrier>)
 set_tests_properties(case.agglomeration.barrier PROPERTIES

@@ -16,6 +16,20 @@
     stable" before a run, with the project's own force kernels and the
     run's cut-offs (src/colloidModels: vanDerWaals.H, doubleLayer.H).
 
+    With -stabilityRatio it also gives how fast Brownian motion alone
+    brings pairs into contact: Fuchs' stability ratio with the DEM's own
+    hydrodynamics (the free Stokes drag of each particle and the pair's
+    lubrication, with the run's cut-offs), W = S I with
+        I = integral from h_t to infinity of beta(h) exp(U(h)/k_B T)/(S + h)^2 dh,
+        beta(h) = 1 + c(h)/zeta_red  (relative diffusion D_inf/D(h): the
+                  lubrication resistance c in parallel with the pair's
+                  reduced Stokes drag zeta_red = 6 pi mu R1 R2/(R1 + R2)),
+    S = R1 + R2 and h_t the touching gap of the contact analysis; the
+    collision rate constant k = 4 pi D_inf/I, D_inf = k_B T (1/zeta_1 +
+    1/zeta_2) (Smoluchowski's 8 k_B T/(3 mu) for equal spheres without
+    forces and hydrodynamics).  W near 1: every Brownian encounter ends in
+    contact; W = e^20: one in 5e8.
+
     The energy is the work against the DEM's force, U(h) = integral from h
     to the largest outer cut-off of F(h') dh' (the forces are force-shifted
     to zero at their outer cut-offs and held constant below their inner
@@ -29,17 +43,25 @@
           [-vdwOuterCutoff 1e-7] [-doubleLayerOuterCutoff inf]
           [-innerCutoff 4e-10] [-form linearSuperposition|hoggHealyFuerstenau]
           [-ccc height_kT] [-zetaAt height_kT] [-csv file]
+          [-stabilityRatio [-viscosity 1e-3] [-lubricationInnerCutoff 1e-9]
+           [-lubricationOuterCutoff 1e-7] [-touchingGap 0.01 R_min]
+           [-solidsFraction phi]]
     Prints key = value lines: debyeLength, barrier (k_B T) and barrierGap,
     the energy at contact (the inner cut-off), the secondary minimum;
     with -ccc the salt concentration at which the barrier is height_kT
     (bisection in log c over 1e-4 ... 1e4 mol/m^3); with -zetaAt the
     zeta potential (of both surfaces, with the sign given) at which it
     is height_kT at the given salt (bisection over 0 ... 0.3 V); with
-    -csv the curve (gap, force, energy).  Bad input: a message naming the option, its
+    -csv the curve (gap, force, energy); with -stabilityRatio (pairs only)
+    stabilityRatio, hydrodynamicRetardation (W without the colloid
+    forces), perikineticRate k [m^3/s] and, with -solidsFraction (the
+    particles' volume fraction, particles of radius R), the Brownian
+    contacts per particle and second, k n.  Bad input: a message naming the option, its
     value and the allowed range, and exit 1.
 \*---------------------------------------------------------------------------*/
 #include "constants.H"
 #include "doubleLayer.H"
+#include "lubrication.H"
 #include "pairGeometry.H"
 #include "vanDerWaals.H"
 
@@ -70,6 +92,9 @@ struct Options
     double cccHeight = std::nan("");
     double zetaHeight = std::nan("");
     std::string csv;
+    bool stability = false;
+    double viscosity = 1e-3, lubInner = 1e-9, lubOuter = 1e-7;
+    double touchingGap = std::nan(""), solidsFraction = std::nan("");
 };
 
 [[noreturn]] void usage(const std::string& why)
@@ -79,7 +104,8 @@ struct Options
         "           -salt c [-valence z] [-temperature T] [-permittivity eps_r]\n"
         "           [-vdwOuterCutoff h] [-doubleLayerOuterCutoff h] [-innerCutoff h]\n"
         "           [-form linearSuperposition|hoggHealyFuerstenau] [-ccc height_kT] [-zetaAt height_kT]\n"
-        "           [-csv file]\n"
+        "           [-csv file] [-stabilityRatio [-viscosity mu] [-lubricationInnerCutoff h]\n"
+        "           [-lubricationOuterCutoff h] [-touchingGap h] [-solidsFraction phi]]\n"
         "       (SI units: m, J, V, mol/m^3 = mM, K)\n";
     std::exit(1);
 }
@@ -102,6 +128,7 @@ Options parse(int argc, char** argv)
     {
         const std::string a = argv[k];
         if (a == "-wall") { o.wall = true; continue; }
+        if (a == "-stabilityRatio") { o.stability = true; continue; }
         if (k + 1 >= argc) usage("option " + a + " needs a value");
         const char* v = argv[++k];
         if (a == "-radius") o.R1 = number(a, v);
@@ -124,6 +151,11 @@ Options parse(int argc, char** argv)
         else if (a == "-ccc") o.cccHeight = number(a, v);
         else if (a == "-zetaAt") o.zetaHeight = number(a, v);
         else if (a == "-csv") o.csv = v;
+        else if (a == "-viscosity") o.viscosity = number(a, v);
+        else if (a == "-lubricationInnerCutoff") o.lubInner = number(a, v);
+        else if (a == "-lubricationOuterCutoff") o.lubOuter = number(a, v);
+        else if (a == "-touchingGap") o.touchingGap = number(a, v);
+        else if (a == "-solidsFraction") o.solidsFraction = number(a, v);
         else if (a == "-form")
         {
             const std::string f = v;
@@ -142,6 +174,22 @@ Options parse(int argc, char** argv)
     if (std::isnan(o.zeta2)) o.zeta2 = o.zeta1;
     if (!std::isnan(o.zetaHeight) && (o.zeta2 != o.zeta1 || o.zeta1 == 0))
         usage("option -zetaAt: needs one non-zero -zeta for both surfaces (its sign is kept)");
+    if (o.stability)
+    {
+        if (o.wall) usage("option -stabilityRatio: pairs of particles only, not -wall");
+        if (std::isnan(o.touchingGap)) o.touchingGap = 0.01*std::min(o.R1, o.R2);
+        if (!(o.touchingGap >= 0.5*o.inner) || !(o.touchingGap < 1e-6))
+            usage("option -touchingGap: " + std::to_string(o.touchingGap)
+                  + " m; allowed: half the inner cut-off (" + std::to_string(0.5*o.inner)
+                  + " m) <= h < 1e-6 m");
+        if (!std::isnan(o.solidsFraction) && !(o.solidsFraction > 0 && o.solidsFraction < 0.74))
+            usage("option -solidsFraction: " + std::to_string(o.solidsFraction)
+                  + "; allowed: 0 < phi < 0.74");
+    }
+    else if (!std::isnan(o.touchingGap) || !std::isnan(o.solidsFraction))
+    {
+        usage("options -touchingGap and -solidsFraction need -stabilityRatio");
+    }
     return o;
 }
 
@@ -239,6 +287,47 @@ Barrier barrier(const Curve& c, const Options& o)
     return b;
 }
 
+// I = integral from h_t to infinity of beta(h) exp(U(h)/kT)/(S + h)^2 dh
+// [1/m] (header); U from the curve (linear between its gaps, 0 beyond
+// it), or 0 everywhere without colloid forces.  Trapezoidal rule on 40 000
+// geometric gaps up to where U and the lubrication have ended, then the
+// tail 1/(S + H) in closed form.
+double encounterIntegral(const Curve& c, const Options& o, double kT, bool withForces)
+{
+    colloid::LubricationParameters lp;
+    lp.viscosity = o.viscosity;
+    lp.innerCutoff = o.lubInner;
+    lp.outerCutoff = o.lubOuter;
+    const colloid::Lubrication lub(lp);
+    const double S = o.R1 + o.R2;
+    const double zetaRed = 6*colloid::constants::pi*o.viscosity*o.R1*o.R2/S;
+    auto U = [&](double h)
+    {
+        if (!withForces || h >= c.h.back()) return 0.0;
+        const std::size_t k = std::upper_bound(c.h.begin(), c.h.end(), h) - c.h.begin();
+        if (k == 0) return c.U.front();
+        const double t = (h - c.h[k - 1])/(c.h[k] - c.h[k - 1]);
+        return (1 - t)*c.U[k - 1] + t*c.U[k];
+    };
+    auto integrand = [&](double h)
+    {
+        const double beta = 1 + lub.resistance(o.R1, o.R2, h)/zetaRed;
+        return beta*std::exp(U(h)/kT)/((S + h)*(S + h));
+    };
+    const double H = std::max(c.h.back(), o.lubOuter);
+    const int n = 40000;
+    double I = 0, hPrev = o.touchingGap, gPrev = integrand(hPrev);
+    for (int k = 1; k < n; k++)
+    {
+        const double h = o.touchingGap*std::pow(H/o.touchingGap, double(k)/(n - 1));
+        const double g = integrand(h);
+        I += 0.5*(g + gPrev)*(h - hPrev);
+        hPrev = h;
+        gPrev = g;
+    }
+    return I + 1/(S + H);
+}
+
 } // namespace
 
 
@@ -256,6 +345,22 @@ int main(int argc, char** argv)
         std::printf("contactEnergy = %.6g kT\n", b.contact/kT);
         std::printf("secondaryMinimum = %.6g kT\nsecondaryMinimumGap = %.6g m\n",
                     b.secondary/kT, b.secondaryGap);
+        if (o.stability)
+        {
+            const double S = o.R1 + o.R2;
+            const double I = encounterIntegral(c, o, kT, true);
+            const double I0 = encounterIntegral(c, o, kT, false);
+            const double Dinf = kT*(o.R1 + o.R2)/(6*colloid::constants::pi*o.viscosity*o.R1*o.R2);
+            const double k = 4*colloid::constants::pi*Dinf/I;
+            std::printf("stabilityRatio = %.6g\nhydrodynamicRetardation = %.6g\n"
+                        "perikineticRate = %.6g m^3/s\ntouchingGap = %.6g m\n",
+                        S*I, S*I0, k, o.touchingGap);
+            if (!std::isnan(o.solidsFraction))
+            {
+                const double n = o.solidsFraction/(4.0/3.0*colloid::constants::pi*std::pow(o.R1, 3));
+                std::printf("brownianContactsPerParticle = %.6g 1/s\n", k*n);
+            }
+        }
         if (!o.csv.empty())
         {
             std::ofstream out(o.csv);

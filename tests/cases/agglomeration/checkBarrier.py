@@ -22,6 +22,19 @@ length 13 nm there) within 0.1 %; the zeta at which the slot coater's
 barrier vanishes within 0.1 % (measured: 5e-5 or better; the tool's
 integration and bisection), and bad input exits 1 naming the option.
 
+Brownian encounters (-stabilityRatio): Fuchs' W = S I, S = R1 + R2,
+    I = integral from h_t of beta(h) exp(U/k_B T)/(S + h)^2 dh,
+    beta = 1 + c(h)/zeta_red = 1 + R*(1/max(h, h_in) - 1/h_out) (h < h_out),
+and k = 4 pi D_inf/I with D_inf = k_B T/zeta_red, zeta_red = 6 pi mu R*:
+  - without colloid forces the integral is closed: with h_in <= h_t,
+    int (1 + R*/h - R*/h_out)/(S + h)^2 dh
+      = -(1 - R*/h_out)/(S + h) + R* [ln(h/(S + h))/S^2 + 1/(S (S + h))],
+    from h_t to h_out, plus 1/(S + h_out) beyond: W and k within 1e-4
+    (two radii, two touching gaps);
+  - with the double layer near its critical value (zeta -10 mV, barrier
+    about 7 kT) W by Simpson's rule on U of the closed form above within
+    0.1 % (e^(7 kT) magnifies an error in U sevenfold; measured 3e-5).
+
     checkBarrier.py colloidBarrier
 """
 import math
@@ -92,6 +105,36 @@ gamma = math.sqrt(math.e*A*Rs*k/(6*prefactor(Rs, 1.0)/math.tanh(e/(4*kT))**2))
 zc = -4*kT/e*math.atanh(gamma)
 r = run('-radius', R, '-hamaker', A, '-zeta', zeta, '-salt', c, '-zetaAt', 0, *NONE)
 check('zeta at no barrier [V]', r['zetaAtBarrier'], zc, 0.001)
+
+# 5. Brownian encounters without colloid forces: closed form
+mu, hIn, hOut = 1e-3, 1e-9, 1e-7
+for R1, R2, ht in ((0.15e-6, 0.15e-6, 1.5e-9), (0.1e-6, 0.3e-6, 3e-9)):
+    S, Rs = R1 + R2, R1*R2/(R1 + R2)
+    F = lambda h: -(1 - Rs/hOut)/(S + h) + Rs*(math.log(h/(S + h))/S**2 + 1/(S*(S + h)))
+    I = F(hOut) - F(ht) + 1/(S + hOut)
+    r = run('-radius', R1, '-radius2', R2, '-hamaker', 0, '-zeta', 0, '-salt', c,
+            '-stabilityRatio', '-touchingGap', ht, '-viscosity', mu,
+            '-lubricationInnerCutoff', hIn, '-lubricationOuterCutoff', hOut)
+    Dinf = kT/(6*math.pi*mu*Rs)
+    check('W, lubrication only, R2/R1 = %g' % (R2/R1), r['stabilityRatio'], S*I, 1e-4)
+    check('k, lubrication only, R2/R1 = %g' % (R2/R1), r['perikineticRate'], 4*math.pi*Dinf/I, 1e-4)
+
+# 6. Brownian encounters over a barrier of about 7 kT (zeta -10 mV)
+zeta3, ht = -0.010, 1.5e-9
+B3 = prefactor(Rs, zeta3)
+U3 = lambda h: B3*math.exp(-k*h) - A*Rs/(6*h)
+S = 2*R
+beta = lambda h: 1 + (Rs*(1/max(h, hIn) - 1/hOut) if h < hOut else 0)
+g = lambda h: beta(h)*math.exp(U3(h)/kT)/(S + h)**2
+# Simpson on ln h (the integrand varies on the scale of h), to 10 um, then
+# the tail (U there below 1e-40 kT)
+H, m = 1e-5, 20000
+x0, x1 = math.log(ht), math.log(H)
+dx = (x1 - x0)/m
+I = sum((1 if j in (0, m) else 4 if j % 2 else 2)*g(math.exp(x0 + j*dx))*math.exp(x0 + j*dx)
+        for j in range(m + 1))*dx/3 + 1/(S + H)
+r = run('-radius', R, '-hamaker', A, '-zeta', zeta3, '-salt', c, '-stabilityRatio', *NONE)
+check('W, zeta -10 mV', r['stabilityRatio'], S*I, 0.001)
 
 # 4. bad input
 bad = subprocess.run([tool] + [str(a) for a in ('-radius', R, '-hamaker', A, '-zeta', zeta, '-salt', -1)],
