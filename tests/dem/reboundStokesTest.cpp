@@ -116,13 +116,29 @@ double loadingStiffness()
 const double K1 = loadingStiffness();
 const double K2 = K1/(eDry*eDry);
 
-//- Walton-Braun contact duration at the wall [s]
-double contactTime()
+//- The 1-D motion the reference solves: the gap h between the sphere and
+//  the wall, or between two equal spheres approaching each other head-on
+//  (their relative motion: reduced mass m/2, relative speed 2 v0, the
+//  pair's resistance 6 pi mu (R/2)^2/h, a quarter of the wall's; the
+//  contact's K1 and K2 are the same)
+struct Collision
 {
-    return 0.5*pi*(std::sqrt(mass/K1) + std::sqrt(mass/K2));
+    double m;           // mass of the relative motion [kg]
+    double w0;          // approach speed [m/s]
+    double cScale;      // resistance / the wall's
+    bool ruptured;      // lubricationAfterContact 1
+};
+
+Collision wallCollision(bool ruptured) { return {mass, v0, 1.0, ruptured}; }
+Collision pairCollision(bool ruptured) { return {mass/2, 2*v0, 0.25, ruptured}; }
+
+//- Walton-Braun contact duration [s]
+double contactTime(const Collision& k)
+{
+    return 0.5*pi*(std::sqrt(k.m/K1) + std::sqrt(k.m/K2));
 }
 
-//- Viscosity [Pa s] of the Stokes number St at v0
+//- Viscosity [Pa s] of the Stokes number St at v0 (defined for the wall)
 double viscosity(double St)
 {
     return mass*v0/(6*pi*radius*radius*St);
@@ -139,17 +155,19 @@ double lambda(double h)
 
 //- Separation speed [m/s] after a contact entered at vIn [m/s], the
 //  resistance c [kg/s] acting throughout (RK4, nSteps per contact time);
-//  0 if the sphere comes to rest in contact
-double separationSpeed(double vIn, double c, int nSteps)
+//  0 if the bodies come to rest in contact.  ruptured: set when the
+//  overlap exceeded h_in (lubricationAfterContact 1: no lubrication on
+//  the way out).
+double separationSpeed(const Collision& k, double vIn, double c, int nSteps, bool& ruptured)
 {
-    const double dt = contactTime()/nSteps;
+    const double dt = contactTime(k)/nSteps;
     double d = 0, u = vIn, dMax = 0;
     auto accel = [&](double dd, double uu)
     {
-        if (dd <= 0) return -c*uu/mass;
+        if (dd <= 0) return -c*uu/k.m;
         const double dm = std::max(dMax, dd);
         const double F = std::max(0.0, std::min(K1*dd, K2*(dd - dm*(1 - K1/K2))));
-        return (-F - c*uu)/mass;
+        return (-F - c*uu)/k.m;
     };
     for (long n = 0; n < 100L*nSteps; n++)
     {
@@ -159,6 +177,7 @@ double separationSpeed(double vIn, double c, int nSteps)
         const double k4d = u + dt*k3u, k4u = accel(d + dt*k3d, u + dt*k3u);
         const double dNew = d + dt/6*(k1d + 2*k2d + 2*k3d + k4d);
         const double uNew = u + dt/6*(k1u + 2*k2u + 2*k3u + k4u);
+        ruptured = k.ruptured && dMax > hIn;
         if (dNew <= 0)
         {
             // out of contact within this step: linear in the overlap
@@ -173,39 +192,52 @@ double separationSpeed(double vIn, double c, int nSteps)
 
 struct Outcome
 {
-    double e;       // v_out/v0, 0 if the sphere stops
-    double lambda;  // Lambda at the rest gap if it stops, else 0
+    double e;       // separation speed / approach speed, 0 if they stop
+    double lambda;  // Lambda at the rest gap if they stop, else 0
 };
 
-//- The reference outcome at Stokes number St
-Outcome reference(double St, int nSteps = 20000)
+//- The reference outcome at Stokes number St.  Outside contact the
+//  relative motion loses (c-integral)/m, i.e. w0 Lambda/St_k with
+//  St_k = St m w0/(mass v0 cScale) (4 St for the pair); with a ruptured
+//  film nothing on the way out.
+double stokesNumber(const Collision& k, double St)
 {
-    const double L0 = lambda(0);
-    if (St <= L0)
-    {
-        return {0.0, St};  // at rest before contact: Lambda(h_s) = St
-    }
-    const double vIn = v0*(1 - L0/St);
-    const double c = 6*pi*viscosity(St)*radius*radius*(1/hIn - 1/hOut);
-    const double vSep = separationSpeed(vIn, c, nSteps);
-    const double vOut = vSep - v0*L0/St;
-    if (vOut <= 0)
-    {
-        return {0.0, L0 - St*vSep/v0};
-    }
-    return {vOut/v0, 0.0};
+    return St*k.m*k.w0/(mass*v0*k.cScale);
 }
 
-//- The DEM run at Stokes number St on a mesh or primitive wall
-Outcome simulate(double St, bool meshWall)
+Outcome reference(const Collision& k, double St, int nSteps = 20000)
+{
+    const double Stk = stokesNumber(k, St);
+    const double L0 = lambda(0);
+    if (Stk <= L0)
+    {
+        return {0.0, Stk};  // at rest before contact: Lambda(h_s) = St_k
+    }
+    const double vIn = k.w0*(1 - L0/Stk);
+    const double c = k.cScale*6*pi*viscosity(St)*radius*radius*(1/hIn - 1/hOut);
+    bool ruptured = false;
+    const double vSep = separationSpeed(k, vIn, c, nSteps, ruptured);
+    const double vOut = ruptured ? vSep : vSep - k.w0*L0/Stk;
+    if (vOut <= 0)
+    {
+        return {0.0, L0 - Stk*vSep/k.w0};
+    }
+    return {vOut/k.w0, 0.0};
+}
+
+enum class Target { meshWall, primitiveWall, pair };
+
+//- The DEM run at Stokes number St against a wall or a second sphere
+Outcome simulate(double St, Target target, bool ruptured)
 {
     // run units: um, us, pg; velocity m/s, viscosity mPa s, stiffness nN/um
     const double R = radius/um;
     const double mu = viscosity(St)*1e3;
+    const Collision k = target == Target::pair ? pairCollision(ruptured) : wallCollision(ruptured);
     // 100 steps per contact; COLLOID_REBOUND_STEPS overrides it for the
     // error-against-step measurement (benchmarks, closing notes)
     const char* steps = std::getenv("COLLOID_REBOUND_STEPS");
-    const double dt = contactTime()/us/(steps ? std::atof(steps) : 100);
+    const double dt = contactTime(k)/us/(steps ? std::atof(steps) : 100);
     const double range = hOut/um;
 
     LiggghtsRun run;
@@ -220,13 +252,14 @@ Outcome simulate(double St, bool meshWall)
           "fix l1 all property/global liquidViscosity scalar " << mu << "\n"
           "fix l2 all property/global lubricationInnerCutoff scalar " << hIn/um << "\n"
           "fix l3 all property/global lubricationOuterCutoff scalar " << range << "\n"
+          "fix l4 all property/global lubricationAfterContact scalar " << (ruptured ? 1 : 0) << "\n"
           // a primitive wall sees particles within half the skin
-          "neighbor " << (meshWall ? 0.05*R : 2.05*range) << " bin\n"
+          "neighbor " << (target == Target::primitiveWall ? 2.05*range : 0.05*R) << " bin\n"
           "neigh_modify delay 0\n"
           "pair_style gran model walton_braun tangential history cohesion colloid/lub\n"
           "pair_coeff * *\n"
           "timestep " << dt << "\n";
-    if (meshWall)
+    if (target == Target::meshWall)
     {
         // one file per test case: ctest may run them in parallel
         const std::string stl =
@@ -236,35 +269,60 @@ Outcome simulate(double St, bool meshWall)
               "fix wall all wall/gran model walton_braun tangential history "
               "cohesion colloid/lub mesh n_meshes 1 meshes wallMesh\n";
     }
-    else
+    else if (target == Target::primitiveWall)
     {
         in << "fix wall all wall/gran model walton_braun tangential history "
               "cohesion colloid/lub primitive type 2 zplane 0.0\n";
     }
-    in << "fix integrate all nve/sphere\n"
-          "create_atoms 1 single 0 0 " << R + 1.01*range << " units box\n"
-          "set atom 1 diameter " << 2*R << " density " << density*1e-3 << "\n"
-          "velocity all set 0 0 " << -v0 << " units box\n"
-          "run 0\n";
+    in << "fix integrate all nve/sphere\n";
+    if (target == Target::pair)
+    {
+        // centres 2 R + 1.01 h_out apart, symmetric about z = 0
+        const double z = R + 0.505*range;
+        in << "create_atoms 1 single 0 0 " << z << " units box\n"
+              "create_atoms 1 single 0 0 " << -z << " units box\n"
+              "set atom 1 diameter " << 2*R << " density " << density*1e-3 << "\n"
+              "set atom 2 diameter " << 2*R << " density " << density*1e-3 << "\n"
+              "velocity all set 0 0 " << -v0 << " units box\n"
+              "group lower id 2\n"
+              "velocity lower set 0 0 " << v0 << " units box\n";
+    }
+    else
+    {
+        in << "create_atoms 1 single 0 0 " << R + 1.01*range << " units box\n"
+              "set atom 1 diameter " << 2*R << " density " << density*1e-3 << "\n"
+              "velocity all set 0 0 " << -v0 << " units box\n";
+    }
+    in << "run 0\n";
     run.commands(in.str());
+
+    // the gap [um] and its rate [m/s]
+    auto gap = [&]()
+    {
+        return target == Target::pair ? run.x(1)[2] - run.x(2)[2] - 2*R : run.x(1)[2] - R;
+    };
+    auto gapRate = [&]()
+    {
+        return target == Target::pair ? run.v(1)[2] - run.v(2)[2] : run.v(1)[2];
+    };
 
     const double tMax = 100*hOut/v0/us;
     double t = 0;
     while (t < tMax)
     {
-        const double h = run.x(1)[2] - R;
-        const double v = run.v(1)[2];
-        if (h > range && v > 0)
+        const double h = gap();
+        const double w = gapRate();
+        if (h > range && w > 0)
         {
-            return {v/v0, 0.0};
+            return {w/k.w0, 0.0};
         }
         // at rest (outside contact, not at the turning point in it)
-        if (h > 0 && std::fabs(v) < 1e-5*v0)
+        if (h > 0 && std::fabs(w) < 1e-5*k.w0)
         {
             return {0.0, lambda(h*um)};
         }
         // in steps of at most 1/4 of the remaining travel at this speed
-        const double travel = std::fabs(v) > 0 ? std::max(h, hIn/um)/std::fabs(v) : dt;
+        const double travel = std::fabs(w) > 0 ? std::max(h, hIn/um)/std::fabs(w) : dt;
         const int n = std::max(1, std::min(2000, static_cast<int>(0.25*travel/dt)));
         run.commands("run " + std::to_string(n) + " pre no post no\n");
         t += n*dt;
@@ -276,36 +334,65 @@ Outcome simulate(double St, bool meshWall)
 const std::vector<double> stokesNumbers =
     {5, 10, 20, 30, 40, 50, 70, 100, 200, 500, 1000, 2000};
 
-//- Stokes number [-] above which the reference rebounds (bisection)
-double criticalStokesNumber()
+//- Stokes number [-] above which the reference rebounds from the wall
+//  (bisection)
+double criticalStokesNumber(bool ruptured)
 {
     double lo = lambda(0), hi = 1e4;
     for (int i = 0; i < 60; i++)
     {
         const double mid = 0.5*(lo + hi);
-        if (reference(mid).e > 0) hi = mid; else lo = mid;
+        if (reference(wallCollision(ruptured), mid).e > 0) hi = mid; else lo = mid;
     }
     return 0.5*(lo + hi);
 }
 
 //- DEM against the reference at these Stokes numbers
-void compareWithReference(const std::vector<double>& St, bool meshWall)
+void compareWithReference(const std::vector<double>& St, Target target, bool ruptured)
 {
-    std::printf("K1 %.4g N/m, contact time %.4g s, Lambda(0) = ln(h_out/h_in) = %.4f\n",
-        K1, contactTime(), lambda(0));
+    const Collision k = target == Target::pair ? pairCollision(ruptured) : wallCollision(ruptured);
+    std::printf("K1 %.4g N/m, contact time %.4g s, Lambda(0) = ln(h_out/h_in) = %.4f%s\n",
+        K1, contactTime(k), lambda(0), ruptured ? ", film ruptured after contact" : "");
     std::printf("%8s %10s %10s %10s %12s %12s\n",
-        "St", "e DEM", "e ref", "diff/v0", "Lambda DEM", "Lambda ref");
+        "St", "e DEM", "e ref", "diff", "Lambda DEM", "Lambda ref");
     for (double s : St)
     {
-        const Outcome ref = reference(s);
-        const Outcome fine = reference(s, 40000);
+        const Outcome ref = reference(k, s);
+        const Outcome fine = reference(k, s, 40000);
         ASSERT_NEAR(fine.e, ref.e, 1e-6) << "RK4 not converged at St " << s;
-        ASSERT_NEAR(fine.lambda/s, ref.lambda/s, 1e-6) << "RK4 not converged at St " << s;
-        const Outcome dem = simulate(s, meshWall);
+        const double Stk = stokesNumber(k, s);
+        ASSERT_NEAR(fine.lambda/Stk, ref.lambda/Stk, 1e-6) << "RK4 not converged at St " << s;
+        const Outcome dem = simulate(s, target, ruptured);
         std::printf("%8g %10.5f %10.5f %10.5f %12.5f %12.5f\n",
             s, dem.e, ref.e, dem.e - ref.e, dem.lambda, ref.lambda);
         EXPECT_NEAR(dem.e, ref.e, 0.01) << "e_wet at St " << s;
-        EXPECT_NEAR(dem.lambda/s, ref.lambda/s, 0.01) << "rest gap at St " << s;
+        EXPECT_NEAR(dem.lambda/Stk, ref.lambda/Stk, 0.01) << "rest gap at St " << s;
+    }
+}
+
+//- The DEM's wall rebound against the experiments (header, point 2);
+//  agreeFrom: the smallest St from which exp(-35/St) must hold within 0.1
+void compareWithExperiments(bool ruptured, double agreeFrom)
+{
+    std::printf("critical St: model (reference) %.4g; experiments ~10 "
+        "(Joseph et al. 2001, Gondret et al. 2002)\n", criticalStokesNumber(ruptured));
+    std::printf("%8s %14s %14s %10s\n", "St", "e_wet/e_dry", "exp(-35/St)", "diff");
+    double previous = 0;
+    for (double St : stokesNumbers)
+    {
+        const double ratio = simulate(St, Target::meshWall, ruptured).e/eDry;
+        const double fit = std::exp(-35/St);
+        std::printf("%8g %14.4f %14.4f %10.4f\n", St, ratio, fit, ratio - fit);
+        if (St <= (ruptured ? 5 : 10))
+        {
+            EXPECT_EQ(ratio, 0.0) << "rebound at St " << St << ", below the experiments' ~10";
+        }
+        EXPECT_GE(ratio, previous) << "e_wet/e_dry falls at St " << St;
+        if (St >= agreeFrom && St <= 2000)
+        {
+            EXPECT_NEAR(ratio, fit, 0.1) << "against exp(-35/St) at St " << St;
+        }
+        previous = ratio;
     }
 }
 
@@ -314,37 +401,41 @@ void compareWithReference(const std::vector<double>& St, bool meshWall)
 
 TEST(reboundStokes, reboundStokesModel)
 {
-    compareWithReference(stokesNumbers, true);
+    compareWithReference(stokesNumbers, Target::meshWall, false);
 }
 
 
 TEST(reboundStokes, reboundStokesPrimitiveWall)
 {
-    compareWithReference({10, 30, 50, 500}, false);
+    compareWithReference({10, 30, 50, 500}, Target::primitiveWall, false);
 }
 
 
 TEST(reboundStokes, reboundStokesExperiments)
 {
-    const double StCritical = criticalStokesNumber();
-    std::printf("critical St: model (reference) %.4g; experiments ~10 "
-        "(Joseph et al. 2001, Gondret et al. 2002)\n", StCritical);
-    std::printf("%8s %14s %14s %10s\n", "St", "e_wet/e_dry", "exp(-35/St)", "diff");
-    double previous = 0;
-    for (double St : stokesNumbers)
-    {
-        const double ratio = simulate(St, true).e/eDry;
-        const double fit = std::exp(-35/St);
-        std::printf("%8g %14.4f %14.4f %10.4f\n", St, ratio, fit, ratio - fit);
-        if (St <= 10)
-        {
-            EXPECT_EQ(ratio, 0.0) << "rebound at St " << St << ", below the experiments' ~10";
-        }
-        EXPECT_GE(ratio, previous) << "e_wet/e_dry falls at St " << St;
-        if (St >= 200 && St <= 2000)
-        {
-            EXPECT_NEAR(ratio, fit, 0.1) << "against exp(-35/St) at St " << St;
-        }
-        previous = ratio;
-    }
+    compareWithExperiments(false, 200);
+}
+
+
+TEST(reboundStokes, reboundStokesRupturedModel)
+{
+    compareWithReference(stokesNumbers, Target::meshWall, true);
+}
+
+
+TEST(reboundStokes, reboundStokesRupturedPrimitiveWall)
+{
+    compareWithReference({10, 20, 30, 50, 500}, Target::primitiveWall, true);
+}
+
+
+TEST(reboundStokes, reboundStokesRupturedPair)
+{
+    compareWithReference({3, 5, 8, 10, 20, 50, 500}, Target::pair, true);
+}
+
+
+TEST(reboundStokes, reboundStokesRupturedExperiments)
+{
+    compareWithExperiments(true, 10);
 }
