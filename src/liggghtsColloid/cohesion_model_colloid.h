@@ -162,11 +162,18 @@ public:
             scdata.has_force_update = true;
         }
         // no history at a distance (the pair is not a contact partner),
-        // except a ruptured film's until the gap exceeds the outer cut-off
+        // except a ruptured film's until the gap exceeds the outer cut-off.
+        // The flag is set at every step it is kept: a neighbour-list build
+        // restores the history with the flags cleared, and the next one
+        // keeps only flagged pairs' histories.
         double *film = filmState(scdata);
-        if (film && *film != 0.0 && h < lub_.front().range()) return;
-        if (film) *film = 0.0;
-        if (scdata.contact_flags) *scdata.contact_flags &= ~CONTACT_COHESION_MODEL;
+        const bool keep = film && *film != 0.0 && h < lub_.front().range();
+        if (film && !keep) *film = 0.0;
+        if (scdata.contact_flags)
+        {
+            if (keep) *scdata.contact_flags |= CONTACT_COHESION_MODEL;
+            else *scdata.contact_flags &= ~CONTACT_COHESION_MODEL;
+        }
     }
 
 private:

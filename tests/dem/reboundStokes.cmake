@@ -15,10 +15,3 @@ foreach(name reboundStokesModel reboundStokesPrimitiveWall reboundStokesExperime
         PASS_REGULAR_EXPRESSION "\\[  PASSED  \\] 1 test\\."
         WORKING_DIRECTORY ${CMAKE_CURRENT_BINARY_DIR})
 endforeach()
-
-# The pair with a ruptured film loses a constant Lambda of about 1.3 (of
-# 10.8) more than its reference on the way out (e 0.04 low at St 8, 0.0006
-# at 2000; at St 3 and 5 it does not rebound): the pair's film state, a
-# contact-history value kept at a distance, is not yet right.  Disabled
-# (shown as not run) until it is; walls (per-particle state) pass.
-set_tests_properties(dem.reboundStokesRupturedPair PROPERTIES DISABLED TRUE)
