@@ -14,6 +14,12 @@
      colloidDragImpulse vector  sum over the steps of dt K_i (u_f,i - v_i'),
                         added by the implicit update; the coupling reads it
                         and sets it to zero at each exchange [nN us]
+     colloidDragSet     scalar  1 once the coupling has set the three above
+                        for the atom, 0 for an atom inserted since: the
+                        implicit update then calls the coupling's drag
+                        callback (register_colloid_models.h) before it
+                        reads them, so that an inserted particle feels the
+                        fluid from its first step
    The first three names are those of CFDEMcoupling (couple/cfd/force/...),
    whose explicit drag fix must not be used together with them.
 ------------------------------------------------------------------------- */
@@ -27,6 +33,7 @@ static const char *const coefficient = "Ksl";
 static const char *const fluidVelocity = "uf";
 static const char *const explicitForce = "dragforce";
 static const char *const impulse = "colloidDragImpulse";
+static const char *const assigned = "colloidDragSet";
 
 }
 

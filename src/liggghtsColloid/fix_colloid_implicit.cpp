@@ -10,6 +10,7 @@
 #include <cstdint>
 #include <cstdio>
 #include <cstring>
+#include <map>
 #include <mpi.h>
 #include "atom.h"
 #include "comm.h"
@@ -47,6 +48,18 @@ const int maxDense = 4;
 // stiff (c dt/m* >> 1) and needs backward Euler (weight 1), which damps
 // the stiff relative motion in one step instead of reversing it.
 const double dragWeight = 0.5;
+
+// the coupling's drag callbacks, per LIGGGHTS instance
+struct DragCallback
+{
+    void (*callback)(void *);
+    void *context;
+};
+std::map<const LAMMPS *, DragCallback> &dragCallbacks()
+{
+    static std::map<const LAMMPS *, DragCallback> callbacks;
+    return callbacks;
+}
 
 // symmetric 3x3 block stored as xx yy zz xy xz yz
 void addOuter(double *b, double w, const double *n)
@@ -128,6 +141,12 @@ FixColloidImplicit *FixColloidImplicit::attach(LAMMPS *lmp)
     return fix;
 }
 
+void FixColloidImplicit::setDragCallback(LAMMPS *lmp, void (*callback)(void *), void *context)
+{
+    if (callback) dragCallbacks()[lmp] = DragCallback{callback, context};
+    else dragCallbacks().erase(lmp);
+}
+
 /* ---------------------------------------------------------------------- */
 
 FixColloidImplicit::FixColloidImplicit(LAMMPS *lmp, int narg, char **arg)
@@ -138,6 +157,7 @@ FixColloidImplicit::FixColloidImplicit(LAMMPS *lmp, int narg, char **arg)
   uf_(NULL),
   dragforce_(NULL),
   impulse_(NULL),
+  assigned_(NULL),
   integrated_(0),
   kT_(0.0),
   seed_(0),
@@ -187,9 +207,21 @@ void FixColloidImplicit::findDragProperties()
     uf_ = modify->find_fix_property(colloidDrag::fluidVelocity, "property/atom", "vector", 0, 0, style, false);
     dragforce_ = modify->find_fix_property(colloidDrag::explicitForce, "property/atom", "vector", 0, 0, style, false);
     impulse_ = modify->find_fix_property(colloidDrag::impulse, "property/atom", "vector", 0, 0, style, false);
+    assigned_ = modify->find_fix_property(colloidDrag::assigned, "property/atom", "scalar", 0, 0, style, false);
     if (Ksl_ && !uf_)
         error->all(FLERR, "colloid/implicit: the per-atom drag coefficient 'Ksl' needs "
                           "the fluid velocity 'uf' (fix property/atom ... uf vector ...)");
+}
+
+// the local atoms whose drag the coupling has not set yet (0 without a
+// callback: nothing would set it)
+int FixColloidImplicit::nWithoutDrag() const
+{
+    if (!assigned_ || !dragCallbacks().count(lmp)) return 0;
+    const double *assigned = assigned_->vector_atom;
+    int n = 0;
+    for (int i = 0; i < atom->nlocal; i++) n += assigned[i] == 0.0;
+    return n;
 }
 
 // Brownian motion: the random force of the drag's fluctuation-dissipation
@@ -590,9 +622,19 @@ void FixColloidImplicit::solveSystem(double h, bool accumulateImpulse)
     collecting_ = false;
     const int nlocal = atom->nlocal;
     const int *mask = atom->mask;
-    int local[2] = {!pairs_.empty() || !walls_.empty(), 0}, any[2] = {0, 0};
+    int local[3] = {!pairs_.empty() || !walls_.empty(), 0, nWithoutDrag()}, any[3] = {0, 0, 0};
     for (int i = 0; i < nlocal && !local[1]; i++) local[1] = !(mask[i] & integrated_);
-    MPI_Allreduce(local, any, 2, MPI_INT, MPI_MAX, world);
+    MPI_Allreduce(local, any, 3, MPI_INT, MPI_MAX, world);
+
+    // atoms inserted since the coupling set the drag: it sets theirs now,
+    // on every rank (it may communicate), so that they feel the fluid from
+    // this step on and not from its next exchange
+    if (any[2])
+    {
+        const DragCallback & hook = dragCallbacks().at(lmp);
+        hook.callback(hook.context);
+    }
+
     if (!any[0] && !Ksl_) return;
 
     h_ = h;

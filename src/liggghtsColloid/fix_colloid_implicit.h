@@ -64,7 +64,12 @@
    init, before Modify's), and the CFD coupling (colloidImplicitUpdate()).
    Lubrication models record (i, j, c, n) during the force computation
    instead of applying a force; the coupling's drag comes from per-atom
-   properties (colloid_drag_properties.h).
+   properties (colloid_drag_properties.h). An atom inserted during a run
+   has no drag until the coupling sets it; when the coupling has given a
+   callback (colloidDragCallback), the solve of the step in which such an
+   atom first appears calls it on every rank before it reads the drag, so
+   that the particle feels the fluid (drag, gravity, buoyancy) from its
+   first step. The check rides on the solve's one MPI_Allreduce.
 ------------------------------------------------------------------------- */
 
 #ifndef COLLOID_FIX_COLLOID_IMPLICIT_H
@@ -86,6 +91,11 @@ public:
 
     //- The fix of this instance, or NULL
     static FixColloidImplicit *find(LAMMPS *lmp);
+
+    //- The coupling's hook for atoms without drag (colloidDragSet 0), see
+    //  colloidDragCallback in register_colloid_models.h; kept per LIGGGHTS
+    //  instance, not in the fix, which attach() may re-create
+    static void setDragCallback(LAMMPS *lmp, void (*callback)(void *), void *context);
 
     FixColloidImplicit(LAMMPS *lmp, int narg, char **arg);
 
@@ -122,6 +132,7 @@ private:
     void solve(double h, bool accumulateImpulse);
     void solveSystem(double h, bool accumulateImpulse);
     void findDragProperties();
+    int nWithoutDrag() const;
     void findBrownianMotion();
     void thermalImpulse(int tag, double K, double h, double *R) const;
     double pairThermalImpulse(int a, int b, double c, double h) const;
@@ -143,6 +154,7 @@ private:
     Fix *uf_;
     Fix *dragforce_;
     Fix *impulse_;
+    Fix *assigned_;
 
     // group bits of the time-integrated particles (the unknowns)
     int integrated_;

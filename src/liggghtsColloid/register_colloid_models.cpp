@@ -38,6 +38,11 @@ extern "C" void colloidImplicitUpdate(void *lmp)
     LAMMPS_NS::FixColloidImplicit::attach(static_cast<LAMMPS_NS::LAMMPS *>(lmp));
 }
 
+extern "C" void colloidDragCallback(void *lmp, void (*callback)(void *), void *context)
+{
+    LAMMPS_NS::FixColloidImplicit::setDragCallback(static_cast<LAMMPS_NS::LAMMPS *>(lmp), callback, context);
+}
+
 namespace {
 
 // registers the models when the library is loaded

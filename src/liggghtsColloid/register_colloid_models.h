@@ -16,6 +16,17 @@
    the per-atom properties of colloid_drag_properties.h. A pair style with
    a lubrication model sets it up itself; a CFD coupling calls this after
    the input script and its own fixes, before the first run.
+
+   colloidDragCallback(lmp, callback, context) gives that update a hook
+   for particles inserted during a run: at every step (and set-up) in
+   which some atom has the property colloidDragSet 0
+   (colloid_drag_properties.h), the update calls callback(context) on
+   every rank of lmp, before it reads the drag; the callback sets the
+   drag properties of those atoms and their colloidDragSet to 1 (it may
+   communicate: all ranks call it). Without it such atoms have the
+   property values they were inserted with (no drag) until the coupling
+   sets them. A NULL callback removes the hook; the hook outlives the
+   fix's re-creation by colloidImplicitUpdate.
 ------------------------------------------------------------------------- */
 
 #ifndef COLLOID_REGISTER_COLLOID_MODELS_H
@@ -23,5 +34,11 @@
 
 extern "C" __attribute__((visibility("default"))) void registerColloidModels();
 extern "C" __attribute__((visibility("default"))) void colloidImplicitUpdate(void *lmp);
+extern "C" __attribute__((visibility("default"))) void colloidDragCallback
+(
+    void *lmp,
+    void (*callback)(void *context),
+    void *context
+);
 
 #endif

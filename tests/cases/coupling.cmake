@@ -56,6 +56,20 @@ add_test(NAME case.coupling.parallel
 set_tests_properties(case.coupling.parallel PROPERTIES
     TIMEOUT 120 LABELS "case;coupling" PROCESSORS 2)
 
+# insertedDrag.serial / .parallel: four particles inserted at rest by
+#   insert/pack halfway through a coupling interval feel drag, gravity and
+#   buoyancy from their first DEM step (the plugin's drag callback):
+#   v_y within 0.1 % of the closed form from velocity Verlet's insertion
+#   time (without the callback: 7.4 %), v_x within 1 %; parallel: 2 ranks,
+#   the inserted particles on both DEM ranks, their fluid on one.
+foreach(mode serial parallel)
+    add_test(NAME case.coupling.insertedDrag.${mode}
+        COMMAND ${couplingDir}/runInsertedDragTest.sh ${mode} ${couplingWork}/insertedDrag_${mode})
+    set_tests_properties(case.coupling.insertedDrag.${mode} PROPERTIES
+        TIMEOUT 120 LABELS "case;coupling;stiff")
+endforeach()
+set_tests_properties(case.coupling.insertedDrag.parallel PROPERTIES PROCESSORS 2)
+
 # contactFlags: touchingParticle / touchingWall in the particle file match
 #   the geometry of a hand-placed packing (gap < 1 % of the radius).
 add_test(NAME case.coupling.contactFlags

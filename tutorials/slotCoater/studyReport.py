@@ -45,7 +45,7 @@ def main(studyDir, resultsDir):
         raise SystemExit("no case with a contact analysis in %s (./Allstudy <case> first)" % studyDir)
     os.makedirs(resultsDir, exist_ok=True)
     rows = ["| case | end time [µs] | pair contacts formed per µs | pair contacts at the end | "
-            "mean pair contact duration [µs] | wall contacts at the end | agglomerates | largest | "
+            "mean duration of ended pair contacts [µs] | wall contacts at the end | agglomerates | largest | "
             "run time [s] | particle-steps/s per rank |",
             "|---|---|---|---|---|---|---|---|---|---|"]
     series = {}
@@ -53,10 +53,13 @@ def main(studyDir, resultsDir):
         name = os.path.basename(case)
         s = contactAnalysis.summary(case)
         end, seconds, rate = cost(case)
-        rows.append("| %s | %.4g | %.3g | %d | %.3g | %d | %d | %d | %.0f | %.3g |" % (
-            name, end*1e6, s["pairFormedPerUs"], s["pairContacts"], s["meanPairDuration"]*1e6,
-            s["wallContacts"], s["agglomerates"], s["largestAgglomerate"], seconds, rate))
         data = contactAnalysis.read(case)["contacts"]
+        # a mean over no ended contact is not a duration of 0
+        ended = sum(r["pairBroken"] for r in data[1:])
+        duration = "%.3g" % (s["meanPairDuration"]*1e6) if ended else "none ended"
+        rows.append("| %s | %.4g | %.3g | %d | %s | %d | %d | %d | %.0f | %.3g |" % (
+            name, end*1e6, s["pairFormedPerUs"], s["pairContacts"], duration,
+            s["wallContacts"], s["agglomerates"], s["largestAgglomerate"], seconds, rate))
         series[name] = ([r["time"]*1e6 for r in data], [r["pairContacts"] for r in data],
                         [r["agglomeratedParticles"] for r in data])
     with open(os.path.join(resultsDir, "summary.md"), "w") as f:

@@ -242,6 +242,14 @@ void Foam::demCoupling::startDEM()
         dem.command(std::string("fix ") + name + " all property/atom " + name + " vector yes no no 0 0 0");
     }
 
+    // 1 once the coupling has set an atom's drag; 0 for those inserted
+    // since, whose drag the plugin then asks for (coupleInserted)
+    dem.command
+    (
+        std::string("fix ") + colloidDrag::assigned + " all property/atom "
+      + colloidDrag::assigned + " scalar yes no no 0"
+    );
+
     // Fluid rank and cell of each particle: the start of the next search
     dem.command("fix colloidCell all property/atom colloidCell vector yes no no -1 -1");
 
@@ -420,8 +428,25 @@ void Foam::demCoupling::locateLocal
     scalarField& wallDist
 )
 {
+    locateAtoms
+    (
+        identity(engine_().nLocal()), wallRange, position, proc, cell, wallDist
+    );
+}
+
+
+void Foam::demCoupling::locateAtoms
+(
+    const labelUList& atoms,
+    const scalar wallRange,
+    pointField& position,
+    labelList& proc,
+    labelList& cell,
+    scalarField& wallDist
+)
+{
     liggghtsEngine& dem = engine_();
-    const int n = dem.nLocal();
+    const label n = atoms.size();
     double** x = dem.x();
     double* r = dem.radius();
     double** hint = dem.vectorProperty("colloidCell");
@@ -447,23 +472,24 @@ void Foam::demCoupling::locateLocal
     bool periodic[3];
     dem.box(lo, hi, periodic);
 
-    for (int i = 0; i < n; ++i)
+    forAll(atoms, k)
     {
+        const label i = atoms[k];
         double xi[3] = {x[i][0], x[i][1], x[i][2]};
-        for (int k = 0; k < 3; ++k)
+        for (int d = 0; d < 3; ++d)
         {
-            if (periodic[k])
+            if (periodic[d])
             {
-                const double L = hi[k] - lo[k];
-                xi[k] -= L*std::floor((xi[k] - lo[k])/L);
+                const double L = hi[d] - lo[d];
+                xi[d] -= L*std::floor((xi[d] - lo[d])/L);
             }
         }
-        position[i] = demUnits::length*point(xi[0], xi[1], xi[2]);
-        prevProc[i] = label(hint[i][0]);
-        prevCell[i] = label(hint[i][1]);
+        position[k] = demUnits::length*point(xi[0], xi[1], xi[2]);
+        prevProc[k] = label(hint[i][0]);
+        prevCell[k] = label(hint[i][1]);
         if (wallRange > 0)
         {
-            maxWallDist[i] = (1 + wallRange)*demUnits::length*r[i];
+            maxWallDist[k] = (1 + wallRange)*demUnits::length*r[i];
         }
     }
 
@@ -473,10 +499,10 @@ void Foam::demCoupling::locateLocal
     );
 
     // Store the new hints with the atoms
-    for (int i = 0; i < n; ++i)
+    forAll(atoms, k)
     {
-        hint[i][0] = proc[i];
-        hint[i][1] = cell[i];
+        hint[atoms[k]][0] = proc[k];
+        hint[atoms[k]][1] = cell[k];
     }
 }
 
@@ -597,8 +623,8 @@ void Foam::demCoupling::gatherRecords
         velocity[i] = demUnits::velocity*vector(v[i][0], v[i][1], v[i][2]);
         K[i] = demUnits::dragCoeff*Ksl[i];
 
-        // Drag impulse of the interval / T, as the DEM applied it (zero
-        // for particles inserted during the interval: Ksl = 0)
+        // Drag impulse of the interval / T, as the DEM applied it (for a
+        // particle inserted during the interval: from its first step)
         F[i] = demUnits::force/T*vector(impulse[i][0], impulse[i][1], impulse[i][2]);
     }
 
@@ -721,7 +747,8 @@ Foam::demCoupling::demCoupling
     startCounted_(false),
     demSeconds_(0),
     couplingSeconds_(0),
-    particleSteps_(0)
+    particleSteps_(0),
+    insertedSeconds_(0)
 {
     checkTimeStep();
     checkForceModels();
@@ -794,6 +821,26 @@ Foam::demCoupling::demCoupling
         updateForces();
         analyseContacts(wallDist);
 
+        // From now on, particles the DEM inserts feel the fluid from their
+        // first step (before: the drag of their first interval was zero)
+        engine_().onAtomsWithoutDrag
+        (
+            [this]()
+            {
+                try
+                {
+                    coupleInserted();
+                }
+                catch (const std::exception& e)
+                {
+                    FatalErrorInFunction
+                        << "Coupling the particles inserted at DEM step "
+                        << engine_().timeStep() << " failed: " << e.what()
+                        << exit(FatalError);
+                }
+            }
+        );
+
         // A fresh start's first step sets up with these forces (a resumed
         // run has the written run's last forces back instead)
         if (!restart_.resume())
@@ -856,202 +903,296 @@ void Foam::demCoupling::reportOutsideFluid() const
 }
 
 
+Foam::vector Foam::demCoupling::explicitForce
+(
+    const particleContext& c
+) const
+{
+    vector F = Zero;
+    for (const forceModel& model : forces_)
+    {
+        F += model.force(c);
+    }
+    return F;
+}
+
+
+Foam::List<Foam::FixedList<Foam::scalar, 7>> Foam::demCoupling::fluidForces
+(
+    const particleRecords& rec,
+    const particleDeposit* sampler,
+    scalar& tauMin
+)
+{
+    // Two-way: eps and grad p averaged over each particle's kernel (the
+    // transpose of its deposit: the pressure-gradient forces then balance
+    // the fluid's eps grad p exactly), and so is U with a kernel radius;
+    // else U interpolated at the centre
+    const bool kernelU = props_.twoWay() && props_.kernelRadius() > 0;
+
+    tmp<volVectorField> tgradp, tdivTau;
+    for (const forceModel& model : forces_)
+    {
+        if (model.needsPressureGradient() && !tgradp.valid())
+        {
+            tgradp = props_.rhoFluid()*fvc::grad(*p_);
+        }
+        if (model.needsViscousStress() && !tdivTau.valid())
+        {
+            // div(mu (grad U + grad U^T)) [Pa/m]
+            const volVectorField& Uf = UInterp_.field();
+            tdivTau =
+                props_.muFluid()
+               *(fvc::laplacian(Uf) + fvc::div(T(fvc::grad(Uf))));
+        }
+    }
+
+    tmp<vectorField> sampledU, sampledGradp, sampledDivTau;
+    tmp<scalarField> sampledEps;
+    if (sampler)
+    {
+        sampledEps = sampler->sample(voidfraction_());
+        if (kernelU)
+        {
+            sampledU = sampler->sample(UInterp_.field());
+        }
+        if (tgradp.valid())
+        {
+            sampledGradp = sampler->sample(tgradp());
+        }
+        if (tdivTau.valid())
+        {
+            sampledDivTau = sampler->sample(tdivTau());
+        }
+    }
+
+    const scalar mu = props_.muFluid();
+
+    // Per record: K [kg/s], U [m/s], explicit force [N]
+    const label nRec = rec.position.size();
+    List<FixedList<scalar, 7>> answer(nRec);
+    for (label k = 0; k < nRec; ++k)
+    {
+        // The context; eps = 1, U = 0, no grad(p) without two-way
+        // coupling
+        const label celli = rec.cell[k];
+        particleContext c =
+            restContext(rec.radius[k], rec.mass[k], rec.velocity[k]);
+        c.cell = celli;
+        c.U =
+            sampledU.valid() ? sampledU()[k]
+          : kernelU ? vector::zero
+          : UInterp_.interpolate(rec.position[k], celli);
+        c.gradp =
+            sampledGradp.valid() ? sampledGradp()[k]
+          : tgradp.valid() ? tgradp()[celli] : vector::zero;
+        c.divTau =
+            sampledDivTau.valid() ? sampledDivTau()[k]
+          : tdivTau.valid() ? tdivTau()[celli] : vector::zero;
+        c.eps =
+            sampledEps.valid() ? sampledEps()[k]
+          : voidfraction_.valid() ? voidfraction_()[celli] : 1.0;
+
+        scalar K = drag_->K(c);
+        if (props_.modelB())
+        {
+            K /= c.eps;
+        }
+        if (props_.selfInducedVelocity())
+        {
+            // The kernel-averaged fluid carries the particle's own
+            // disturbance: the fluid's reaction -F spread over the ball
+            // moves it by u_self = -g F, g = 1/(5 pi mu R).  The drag on
+            // the undisturbed slip, F = K (U - u_self - v), is
+            // F = K/(1 - K g) (U - v)
+            const scalar R = max(0.5*c.d, props_.kernelRadius());
+            const scalar Kg = K/(5*constant::mathematical::pi*mu*R);
+            if (Kg >= 0.5)
+            {
+                FatalIOErrorInFunction(props_)
+                    << "selfInducedVelocity: the particle's own"
+                    << " disturbance is " << Kg << " of its slip"
+                    << " (kernelRadius " << props_.kernelRadius()
+                    << " m in " << props_.objectPath() << "): the"
+                    << " correction is for dilute particles much"
+                    << " smaller than the kernel; allowed: K/(5 pi mu R)"
+                    << " < 0.5" << exit(FatalIOError);
+            }
+            K /= 1 - Kg;
+        }
+        tauMin = min(tauMin, c.mass/K);
+        const vector F = explicitForce(c);
+        answer[k] = FixedList<scalar, 7>
+        ({K, c.U.x(), c.U.y(), c.U.z(), F.x(), F.y(), F.z()});
+    }
+    return answer;
+}
+
+
+Foam::label Foam::demCoupling::setAtomForces
+(
+    const labelUList& atoms,
+    const labelUList& proc,
+    const List<FixedList<scalar, 7>>& perAtom,
+    const bool newInterval
+)
+{
+    liggghtsEngine& dem = engine_();
+    double** v = dem.v();
+    double* r = dem.radius();
+    double* m = dem.rmass();
+    double* Ksl = dem.scalarProperty(colloidDrag::coefficient);
+    double** uf = dem.vectorProperty(colloidDrag::fluidVelocity);
+    double** fExplicit = dem.vectorProperty(colloidDrag::explicitForce);
+    double** impulse = dem.vectorProperty(colloidDrag::impulse);
+    double* assigned = dem.scalarProperty(colloidDrag::assigned);
+
+    label nOutside = 0;
+    forAll(atoms, k)
+    {
+        const label i = atoms[k];
+        FixedList<scalar, 7> a = perAtom[k];
+        if (proc[k] < 0)
+        {
+            // Outside the fluid: no drag, the body forces only
+            ++nOutside;
+            const vector F = explicitForce
+            (
+                restContext
+                (
+                    demUnits::length*r[i], demUnits::mass*m[i],
+                    demUnits::velocity*vector(v[i][0], v[i][1], v[i][2])
+                )
+            );
+            a = FixedList<scalar, 7>({0, 0, 0, 0, F.x(), F.y(), F.z()});
+        }
+        Ksl[i] = a[0]/demUnits::dragCoeff;
+        for (direction d = 0; d < 3; ++d)
+        {
+            uf[i][d] = a[1 + d]/demUnits::velocity;
+            fExplicit[i][d] = a[4 + d]/demUnits::force;
+            if (newInterval)
+            {
+                impulse[i][d] = 0;
+            }
+        }
+        assigned[i] = 1;
+    }
+    return nOutside;
+}
+
+
+void Foam::demCoupling::coupleInserted()
+{
+    clockTime clock;
+
+    liggghtsEngine& dem = engine_();
+    const int n = dem.nLocal();
+    const double* assigned = dem.scalarProperty(colloidDrag::assigned);
+    DynamicList<label> atoms;
+    for (int i = 0; i < n; ++i)
+    {
+        if (assigned[i] == 0)
+        {
+            atoms.append(i);
+        }
+    }
+
+    pointField position;
+    labelList proc, cell;
+    scalarField wallDist;
+    locateAtoms(atoms, 0, position, proc, cell, wallDist);
+
+    double** v = dem.v();
+    double* r = dem.radius();
+    double* m = dem.rmass();
+    scalarField radius(atoms.size()), mass(atoms.size());
+    vectorField velocity(atoms.size());
+    forAll(atoms, k)
+    {
+        const label i = atoms[k];
+        radius[k] = demUnits::length*r[i];
+        mass[k] = demUnits::mass*m[i];
+        velocity[k] = demUnits::velocity*vector(v[i][0], v[i][1], v[i][2]);
+    }
+    particleRecords rec;
+    rec.gather
+    (
+        proc, cell, position, radius, mass, velocity,
+        scalarField(atoms.size(), 0), vectorField(atoms.size(), Zero)
+    );
+
+    // Two-way: the fluid at these particles averaged over their kernels,
+    // as at every exchange (a deposit of their own; the fluid's fields do
+    // not change)
+    autoPtr<particleDeposit> sampler;
+    if (props_.twoWay())
+    {
+        sampler.reset(new particleDeposit(mesh_, locator_));
+        scalarField solidVolume(mesh_.nCells(), 0), Kc(mesh_.nCells(), 0);
+        vectorField Fc(mesh_.nCells(), Zero);
+        sampler->deposit
+        (
+            rec.position, rec.cell, rec.radius, props_.kernelRadius(),
+            rec.dragCoeff, rec.dragForce, solidVolume, Kc, Fc
+        );
+    }
+
+    scalar tauMin = GREAT;
+    const List<FixedList<scalar, 7>> answer =
+        fluidForces(rec, sampler.get(), tauMin);
+    List<FixedList<scalar, 7>> perAtom(atoms.size(), FixedList<scalar, 7>(0.0));
+    rec.answer(answer, perAtom);
+
+    const label nOutside =
+        returnReduce(setAtomForces(atoms, proc, perAtom, false), sumOp<label>());
+    checkRelaxationTime(returnReduce(tauMin, minOp<scalar>()));
+
+    Info<< "Coupling: " << returnReduce(atoms.size(), sumOp<label>())
+        << " particles inserted at DEM step " << dem.timeStep()
+        << " get their fluid forces from this step";
+    if (nOutside)
+    {
+        Info<< " (" << nOutside << " outside the fluid: body forces only)";
+    }
+    Info<< endl;
+
+    const scalar seconds = clock.timeIncrement();
+    couplingSeconds_ += seconds;
+    insertedSeconds_ += seconds;
+}
+
+
 void Foam::demCoupling::updateForces()
 {
     try
     {
         clockTime clock;
 
-        // Two-way: eps and grad p averaged over each particle's kernel (the
-        // transpose of its deposit: the pressure-gradient forces then
-        // balance the fluid's eps grad p exactly), and so is U with a
-        // kernel radius; else U interpolated at the centre
-        const bool kernelU = props_.twoWay() && props_.kernelRadius() > 0;
-        if (!kernelU)
+        if (!(props_.twoWay() && props_.kernelRadius() > 0))
         {
             UInterp_.update();
         }
 
-        tmp<volVectorField> tgradp, tdivTau;
-        for (const forceModel& model : forces_)
-        {
-            if (model.needsPressureGradient() && !tgradp.valid())
-            {
-                tgradp = props_.rhoFluid()*fvc::grad(*p_);
-            }
-            if (model.needsViscousStress() && !tdivTau.valid())
-            {
-                // div(mu (grad U + grad U^T)) [Pa/m]
-                const volVectorField& Uf = UInterp_.field();
-                tdivTau =
-                    props_.muFluid()
-                   *(fvc::laplacian(Uf) + fvc::div(T(fvc::grad(Uf))));
-            }
-        }
-
-        const scalar mu = props_.muFluid();
-
-        // Context of a particle; eps = 1, U = 0, no grad(p) outside the
-        // fluid or without two-way coupling
-        auto context = [&](const scalar radius, const scalar mass,
-            const vector& v, const label celli, const point& x)
-        {
-            particleContext c = restContext(radius, mass, v);
-            c.U =
-                (celli >= 0 && !kernelU)
-              ? UInterp_.interpolate(x, celli) : vector::zero;
-            c.gradp =
-                (celli >= 0 && tgradp.valid()) ? tgradp()[celli] : vector::zero;
-            c.divTau =
-                (celli >= 0 && tdivTau.valid())
-              ? tdivTau()[celli] : vector::zero;
-            c.eps =
-                (celli >= 0 && voidfraction_.valid())
-              ? voidfraction_()[celli] : 1.0;
-            c.cell = celli;
-            return c;
-        };
-
-        auto explicitForce = [&](const particleContext& c)
-        {
-            vector F = Zero;
-            for (const forceModel& model : forces_)
-            {
-                F += model.force(c);
-            }
-            return F;
-        };
-
-        tmp<vectorField> sampledU, sampledGradp, sampledDivTau;
-        tmp<scalarField> sampledEps;
-        if (props_.twoWay())
-        {
-            sampledEps = deposit_.sample(voidfraction_());
-            if (kernelU)
-            {
-                sampledU = deposit_.sample(UInterp_.field());
-            }
-            if (tgradp.valid())
-            {
-                sampledGradp = deposit_.sample(tgradp());
-            }
-            if (tdivTau.valid())
-            {
-                sampledDivTau = deposit_.sample(tdivTau());
-            }
-        }
-
-        // On the owning ranks: the records
-        const label nRec = records_.position.size();
-        // What goes back to each particle, in one exchange: K [kg/s],
-        // U [m/s], explicit force [N]
-        List<FixedList<scalar, 7>> answer(nRec);
+        // On the owning ranks: the records' forces
         scalar tauMin = GREAT;
-        for (label k = 0; k < nRec; ++k)
-        {
-            particleContext c = context
-            (
-                records_.radius[k], records_.mass[k], records_.velocity[k],
-                records_.cell[k], records_.position[k]
-            );
-            if (sampledEps.valid())
-            {
-                c.eps = sampledEps()[k];
-            }
-            if (sampledU.valid())
-            {
-                c.U = sampledU()[k];
-            }
-            if (sampledGradp.valid())
-            {
-                c.gradp = sampledGradp()[k];
-            }
-            if (sampledDivTau.valid())
-            {
-                c.divTau = sampledDivTau()[k];
-            }
-            scalar K = drag_->K(c);
-            if (props_.modelB())
-            {
-                K /= c.eps;
-            }
-            if (props_.selfInducedVelocity())
-            {
-                // The kernel-averaged fluid carries the particle's own
-                // disturbance: the fluid's reaction -F spread over the
-                // ball moves it by u_self = -g F, g = 1/(5 pi mu R).  The
-                // drag on the undisturbed slip, F = K (U - u_self - v),
-                // is F = K/(1 - K g) (U - v)
-                const scalar R = max(0.5*c.d, props_.kernelRadius());
-                const scalar Kg = K/(5*constant::mathematical::pi*mu*R);
-                if (Kg >= 0.5)
-                {
-                    FatalIOErrorInFunction(props_)
-                        << "selfInducedVelocity: the particle's own"
-                        << " disturbance is " << Kg << " of its slip"
-                        << " (kernelRadius " << props_.kernelRadius()
-                        << " m in " << props_.objectPath() << "): the"
-                        << " correction is for dilute particles much"
-                        << " smaller than the kernel; allowed: K/(5 pi mu R)"
-                        << " < 0.5" << exit(FatalIOError);
-                }
-                K /= 1 - Kg;
-            }
-            tauMin = min(tauMin, c.mass/K);
-            const vector F = explicitForce(c);
-            answer[k] = FixedList<scalar, 7>
-            ({K, c.U.x(), c.U.y(), c.U.z(), F.x(), F.y(), F.z()});
-        }
+        const List<FixedList<scalar, 7>> answer =
+            fluidForces(records_, props_.twoWay() ? &deposit_ : nullptr, tauMin);
 
         // Back on the particles' ranks
-        liggghtsEngine& dem = engine_();
-        const int n = dem.nLocal();
-        double** v = dem.v();
-        double* r = dem.radius();
-        double* m = dem.rmass();
-        double* Ksl = dem.scalarProperty(colloidDrag::coefficient);
-        double** uf = dem.vectorProperty(colloidDrag::fluidVelocity);
-        double** fExplicit = dem.vectorProperty(colloidDrag::explicitForce);
-        double** impulse = dem.vectorProperty(colloidDrag::impulse);
-
+        const label n = engine_().nLocal();
         List<FixedList<scalar, 7>> perParticle(n, FixedList<scalar, 7>(0.0));
         records_.answer(answer, perParticle);
-
-        label nOutside = 0;
-        for (int i = 0; i < n; ++i)
-        {
-            if (proc_[i] < 0)
-            {
-                // Outside the fluid: no drag, the body forces only
-                ++nOutside;
-                const particleContext c = context
-                (
-                    demUnits::length*r[i], demUnits::mass*m[i],
-                    demUnits::velocity*vector(v[i][0], v[i][1], v[i][2]),
-                    -1, point::zero
-                );
-                const vector F = explicitForce(c);
-                perParticle[i][4] = F.x();
-                perParticle[i][5] = F.y();
-                perParticle[i][6] = F.z();
-            }
-            const FixedList<scalar, 7>& a = perParticle[i];
-            Ksl[i] = a[0]/demUnits::dragCoeff;
-            for (direction k = 0; k < 3; ++k)
-            {
-                uf[i][k] = a[1 + k]/demUnits::velocity;
-                fExplicit[i][k] = a[4 + k]/demUnits::force;
-                impulse[i][k] = 0;
-            }
-        }
-
-        reduce(tauMin, minOp<scalar>());
-        reduce(nOutside, sumOp<label>());
+        const label nOutside = returnReduce
+        (
+            setAtomForces(identity(n), proc_, perParticle, true),
+            sumOp<label>()
+        );
 
         // Particles of the script may differ from those of the settings
-        checkRelaxationTime(tauMin);
+        checkRelaxationTime(returnReduce(tauMin, minOp<scalar>()));
 
-        Info<< "Coupling: " << returnReduce(label(n), sumOp<label>())
+        Info<< "Coupling: " << returnReduce(n, sumOp<label>())
             << " particles, " << nOutside << " outside the fluid, "
             << returnReduce(locator_.nGlobalSearches(), sumOp<label>())
             << " global searches" << endl;
@@ -1088,9 +1229,12 @@ void Foam::demCoupling::evolve()
             restart_.invalidate();
         }
 
+        // The run's time less that of coupling the particles it inserted
+        // (counted as coupling work)
+        const scalar insertedBefore = insertedSeconds_;
         dem.run(props_.couplingInterval());
-
-        demSeconds_ += clock.timeIncrement();
+        demSeconds_ +=
+            clock.timeIncrement() - (insertedSeconds_ - insertedBefore);
         particleSteps_ += scalar(nTotal)*props_.couplingInterval();
 
         // An analysis due: the locating gives it the wall distances too

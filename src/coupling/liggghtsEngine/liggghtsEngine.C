@@ -136,7 +136,8 @@ Foam::liggghtsEngine::liggghtsEngine
     lmp_(nullptr),
     ownsMPI_(false),
     setUpWithParticles_(false),
-    setUpNext_(false)
+    setUpNext_(false),
+    withoutDrag_()
 {
     int started = 0;
     MPI_Initialized(&started);
@@ -186,6 +187,7 @@ Foam::liggghtsEngine::liggghtsEngine
 
 Foam::liggghtsEngine::~liggghtsEngine()
 {
+    colloidDragCallback(lmp_, nullptr, nullptr);
     delete engine(lmp_);
     if (ownsMPI_)
     {
@@ -338,6 +340,26 @@ void Foam::liggghtsEngine::implicitDamping()
     liggghtsCall call;
     registerColloidModels();
     colloidImplicitUpdate(lmp_);
+}
+
+
+void Foam::liggghtsEngine::callWithoutDrag(void* engine)
+{
+    insideLiggghts = false;
+    static_cast<liggghtsEngine*>(engine)->withoutDrag_();
+    insideLiggghts = true;
+}
+
+
+void Foam::liggghtsEngine::onAtomsWithoutDrag(std::function<void()> f)
+{
+    withoutDrag_ = std::move(f);
+    colloidDragCallback
+    (
+        lmp_,
+        withoutDrag_ ? &liggghtsEngine::callWithoutDrag : nullptr,
+        this
+    );
 }
 
 
