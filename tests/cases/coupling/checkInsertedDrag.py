@@ -23,14 +23,13 @@ and that all n inserted particles are there.
 usage: checkInsertedDrag.py caseDir H Umax insertStep nInserted
 """
 import math
-import re
 import os
 import sys
 
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)),
                                 '..', '..', '..', 'src', 'python'))  # particleCloud
 import particleCloud  # noqa: E402
-from checkSettling import entry  # noqa: E402  (an entry of couplingProperties)
+from checkSettling import entry, gravityAlongMinusY  # noqa: E402
 
 TOL_Y = 0.001
 TOL = 0.01
@@ -43,11 +42,7 @@ def main():
     rho_f, mu = entry(props, "rho"), entry(props, "mu")
     d, rho_p = entry(props, "diameter"), entry(props, "density")
     dt = entry(props, "timeStep")
-    gvec = [float(v) for v in
-            re.search(r"value\s*\(([^)]*)\)", open(case + "/constant/g").read()).group(1).split()]
-    g = math.sqrt(sum(c*c for c in gvec))
-    if abs(gvec[1] + g) > 1e-12*g:
-        sys.exit("checkInsertedDrag: expects gravity along -y")
+    g = gravityAlongMinusY(case)
 
     tau = rho_p*d**2/(18*mu)
     vs = (rho_p - rho_f)*g*d**2/(18*mu)

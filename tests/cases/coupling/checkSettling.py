@@ -34,16 +34,22 @@ def entry(text, key):
     return float(m.group(1))
 
 
+def gravityAlongMinusY(case):
+    """|g| of the case's constant/g [m/s^2]; stops unless it points along -y"""
+    gvec = [float(v) for v in
+            re.search(r"value\s*\(([^)]*)\)", open(case + "/constant/g").read()).group(1).split()]
+    g = math.sqrt(sum(c*c for c in gvec))
+    if abs(gvec[1] + g) > 1e-12*g:
+        sys.exit("%s: expects gravity along -y" % os.path.basename(sys.argv[0]))
+    return g
+
+
 def main():
     case, H, Umax = sys.argv[1], float(sys.argv[2]), float(sys.argv[3])
     props = open(case + "/constant/couplingProperties").read()
     rho_f, mu = entry(props, "rho"), entry(props, "mu")
     d, rho_p = entry(props, "diameter"), entry(props, "density")
-    gvec = [float(v) for v in
-            re.search(r"value\s*\(([^)]*)\)", open(case + "/constant/g").read()).group(1).split()]
-    g = math.sqrt(sum(c*c for c in gvec))
-    if abs(gvec[1] + g) > 1e-12*g:
-        sys.exit("checkSettling: expects gravity along -y")
+    g = gravityAlongMinusY(case)
 
     tau = rho_p*d**2/(18*mu)
     vs = (rho_p - rho_f)*g*d**2/(18*mu)
