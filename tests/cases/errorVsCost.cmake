@@ -23,6 +23,20 @@ add_test(NAME case.errorVsCost.settlingStudy
 set_tests_properties(case.errorVsCost.settlingStudy PROPERTIES
     TIMEOUT 300 LABELS "case;errorVsCost" ENVIRONMENT PYTHONDONTWRITEBYTECODE=1)
 
+# errorVsCost.startupReport: colloidDEMFoam prints at start-up the error
+#   the settling study measured at the case's DEM step, its run time and
+#   the cheapest rung within 1 % and 5 %, as errorStudy.csv gives them;
+#   "not measured" off the ladder, "none measured" without a study
+#   (checkStartupReport.py).
+set_tests_properties(case.errorVsCost.settlingStudy PROPERTIES
+    FIXTURES_SETUP errorVsCostSettlingStudy)
+add_test(NAME case.errorVsCost.startupReport
+    COMMAND ${errorVsCostDir}/runStartupReport.sh ${errorVsCostWork}/settling
+            ${errorVsCostWork}/startupReport)
+set_tests_properties(case.errorVsCost.startupReport PROPERTIES
+    TIMEOUT 120 LABELS "case;errorVsCost" FIXTURES_REQUIRED errorVsCostSettlingStudy
+    ENVIRONMENT PYTHONDONTWRITEBYTECODE=1)
+
 foreach(variant shortLadder badLimit missingEntry variableEntry badExpression missingQuantity)
     add_test(NAME case.errorVsCost.badInput.${variant}
         COMMAND ${errorVsCostDir}/runStudyBadInput.sh ${variant} ${errorVsCostWork}/badInput_${variant})

@@ -1,4 +1,5 @@
 #include "demCoupling.H"
+#include "measuredErrors.H"
 #include "demUnits.H"
 #include "liggghtsColloid/colloid_drag_properties.h"
 #include "particleCloudWriter.H"
@@ -101,6 +102,7 @@ void Foam::demCoupling::checkTimeStep() const
         << props_.demTimeStep()/tau << " of it (the DEM prints its own"
         << " limits in log.liggghts)" << endl;
     checkRelaxationTime(tau);
+    reportMeasuredErrors(runTime);
 
     if (runTime.controlDict().getOrDefault<bool>("adjustTimeStep", false))
     {

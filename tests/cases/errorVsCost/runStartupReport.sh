@@ -1,0 +1,40 @@
+#!/bin/bash
+# What colloidDEMFoam prints at start-up as the error to expect, from the
+# settling study's errorStudy/measuredErrors (case.errorVsCost.settlingStudy,
+# the fixture): three runs of the settling case, one coupling step each,
+#   onRung     DEM step 1e-8 s, a rung of the study's ladder
+#   offLadder  DEM step 4e-9 s, on no rung
+#   noStudy    no errorStudy folder
+# then checkStartupReport.py compares the printed lines with the study's
+# errorStudy.csv.
+#
+# usage: runStartupReport.sh settlingStudyDir workDir
+set -e
+study=$1
+work=$2
+here=$(cd "$(dirname "$0")" && pwd)
+set +u
+source "$here/../../../etc/bashrc"
+set -u
+
+rm -rf "$work"
+mkdir -p "$work"
+for variant in onRung offLadder noStudy
+do
+    dir=$work/$variant
+    cp -r "$study/errorStudy/demTimeStep/1_1e-08" "$dir"
+    sed -i "s/^endTime .*/endTime 2e-08;/" "$dir/system/controlDict"
+    case $variant in
+        onRung|offLadder)
+            mkdir "$dir/errorStudy"
+            cp "$study/errorStudy/measuredErrors" "$dir/errorStudy/" ;;
+    esac
+    if [ "$variant" = offLadder ]
+    then
+        sed -i -e "s/^\( *timeStep \+\)[^;]*;/\14e-09;/" \
+               -e "s/^\( *couplingInterval \+\)[^;]*;/\15;/" \
+            "$dir/constant/couplingProperties"
+    fi
+    (cd "$dir" && colloidDEMFoam > log.colloidDEMFoam 2>&1)
+done
+/usr/bin/python3 "$here/checkStartupReport.py" "$study/errorStudy" "$work"
