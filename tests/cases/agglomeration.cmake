@@ -84,6 +84,16 @@ set_tests_properties(case.agglomeration.barrier PROPERTIES
     TIMEOUT 60 LABELS "case;agglomeration" ENVIRONMENT PYTHONDONTWRITEBYTECODE=1
     PASS_REGULAR_EXPRESSION "PASS")
 
+# agglomeration.studyWhere: where the study's report finds agglomerates,
+# on a hand-built cloud (testStudyWhere.py): members across the periodic
+# span, the touching gap, centres and the parts of the die
+add_test(NAME agglomeration.studyWhere
+    COMMAND python3 ${agglomerationDir}/testStudyWhere.py ${CMAKE_SOURCE_DIR}
+            ${agglomerationWork}/studyWhere)
+set_tests_properties(agglomeration.studyWhere PROPERTIES
+    TIMEOUT 30 LABELS "unit;agglomeration" ENVIRONMENT PYTHONDONTWRITEBYTECODE=1
+    PASS_REGULAR_EXPRESSION "PASS")
+
 # agglomeration.study: the study's driver on a copy of the slot coater (one
 # case, two coupling steps at the study's size) and its report
 # (runStudyTest.sh)

@@ -2,7 +2,12 @@
 folder in study/ with a contact analysis, the figures of the whole run
 and the run's cost, as a Markdown table (results/summary.md), and the
 particle contacts and agglomerated particles against time of all cases
-in one plot (results/contacts.png).
+in one plot (results/contacts.png).  Where the agglomerates are at each
+case's last write (results/where.md: each agglomerate's particles by id,
+its centre, height above the substrate and part of the die; where.png:
+the centres on the die's outline): from the written particle cloud, the
+particles with agglomerateSize > 1 grouped by touching (the analysis'
+gap, 1 % of a radius, across the periodic span).
 
     studyReport.py studyDir resultsDir
 
@@ -17,6 +22,10 @@ import sys
 sys.dont_write_bytecode = True
 sys.path.insert(0, os.path.join(os.environ.get("COLLOIDFOAM_DIR", "../.."), "src", "python"))
 import contactAnalysis  # noqa: E402
+import foamDict  # noqa: E402
+import particleCloud  # noqa: E402
+
+TOUCHING = 0.01     # gap / radius within which two particles touch (the analysis')
 
 
 def cost(case):
@@ -36,6 +45,114 @@ def cost(case):
                 if m:
                     rate = float(m.group(1))
     return end, seconds, rate
+
+
+def geometry(case):
+    """The die's dimensions [m] (system/slotCoaterParameters)"""
+    d = foamDict.read(os.path.join(case, "system", "slotCoaterParameters"))
+    return {k: float(d[k]) for k in ("gap", "slotWidth", "slotLength", "upstreamLip",
+                                     "downstreamLip", "span")}
+
+
+def part_of_die(g, x, y):
+    """The part of the die above a point: x along the web from the slot's
+    upstream wall, y up from the substrate"""
+    if y > g["gap"]:
+        return "in the slot"
+    if x < 0:
+        return "under the upstream lip"
+    if x <= g["slotWidth"]:
+        return "below the slot"
+    return "under the downstream lip"
+
+
+def agglomerates(case):
+    """(write time [s], [(ids, centre [m], die part)]) at the case's last
+    write: the particles with agglomerateSize > 1 joined where they touch"""
+    g = geometry(case)
+    last = particleCloud.latest(case)
+    cloud = particleCloud.read(last)
+    members = [k for k, n in enumerate(cloud["agglomerateSize"]) if n > 1]
+    root = {k: k for k in members}
+
+    def find(k):
+        while root[k] != k:
+            root[k] = root[root[k]]
+            k = root[k]
+        return k
+
+    def offset(a, b):
+        d = [cloud["position"][a][j] - cloud["position"][b][j] for j in range(3)]
+        d[2] -= g["span"]*round(d[2]/g["span"])   # periodic span
+        return d
+
+    for i, a in enumerate(members):
+        for b in members[i + 1:]:
+            d = offset(a, b)
+            ra, rb = cloud["radius"][a], cloud["radius"][b]
+            if sum(x*x for x in d)**0.5 - ra - rb < TOUCHING*min(ra, rb):
+                root[find(a)] = find(b)
+    groups = {}
+    for k in members:
+        groups.setdefault(find(k), []).append(k)
+    found = []
+    for ks in groups.values():
+        first = ks[0]
+        # centre: unwrapped about the first member across the span
+        rel = [offset(k, first) for k in ks]
+        c = [cloud["position"][first][j] + sum(r[j] for r in rel)/len(ks) for j in range(3)]
+        c[2] %= g["span"]       # back into the span (the DEM's z from 0)
+        found.append((sorted(cloud["id"][k] for k in ks), c, part_of_die(g, c[0], c[1])))
+    return particleCloud.time(last), sorted(found, key=lambda f: f[1][0])
+
+
+def write_where(cases, resultsDir):
+    """results/where.md and where.png"""
+    rows = ["| case | write time [µs] | particles (ids) | centre x, z [µm] | "
+            "height above the substrate [µm] | part of the die |",
+            "|---|---|---|---|---|---|"]
+    found = {}
+    for case in cases:
+        name = os.path.basename(case)
+        t, groups = agglomerates(case)
+        found[name] = groups
+        if not groups:
+            rows.append("| %s | %.4g | none | | | |" % (name, t*1e6))
+        for ids, c, part in groups:
+            rows.append("| %s | %.4g | %s | %.2f, %.2f | %.2f | %s |" % (
+                name, t*1e6, " ".join(str(i) for i in ids), c[0]*1e6, c[2]*1e6,
+                c[1]*1e6, part))
+    with open(os.path.join(resultsDir, "where.md"), "w") as f:
+        f.write("\n".join(rows) + "\n")
+    print("\n".join(rows))
+
+    import matplotlib
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+    g = {k: v*1e6 for k, v in geometry(cases[0]).items()}
+    fig, (a, zoom) = plt.subplots(2, 1, figsize=(11, 7))
+    # the die's walls and the substrate (x, y in um); below, the layer
+    # next to the substrate enlarged
+    xu, xd = -g["upstreamLip"], g["slotWidth"] + g["downstreamLip"]
+    top = g["gap"] + g["slotLength"]
+    for axis in (a, zoom):
+        axis.plot([xu, xd], [0, 0], "k-", lw=2, label="substrate (moving)")
+        axis.plot([xu, xu, 0, 0], [0, g["gap"], g["gap"], top], "k-", lw=1)
+        axis.plot([g["slotWidth"], g["slotWidth"], xd], [top, g["gap"], g["gap"]], "k-",
+                  lw=1, label="die")
+        for marker, (name, groups) in zip("osd^v<>p", found.items()):
+            axis.plot([c[0]*1e6 for _, c, _ in groups], [c[1]*1e6 for _, c, _ in groups],
+                      marker, ls="none", mfc="none", label="%s (%d)" % (name, len(groups)))
+        axis.set_xlabel("x along the web [µm]")
+        axis.set_ylabel("y above the substrate [µm]")
+    a.set_title("Agglomerates at each case's last write")
+    a.legend(fontsize=8, loc="center")
+    zoom.set_ylim(-0.2, 0.1*g["gap"])
+    zoom.set_title("the layer next to the substrate")
+    fig.tight_layout()
+    fig.savefig(os.path.join(resultsDir, "where.png"), dpi=120)
+    print("written: %s, %s" % (os.path.join(resultsDir, "where.md"),
+                                os.path.join(resultsDir, "where.png")))
 
 
 def main(studyDir, resultsDir):
@@ -87,6 +204,7 @@ def main(studyDir, resultsDir):
     fig.savefig(os.path.join(resultsDir, "contacts.png"), dpi=120)
     print("written: %s, %s" % (os.path.join(resultsDir, "summary.md"),
                                 os.path.join(resultsDir, "contacts.png")))
+    write_where(cases, resultsDir)
 
 
 if __name__ == "__main__":

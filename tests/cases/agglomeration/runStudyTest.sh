@@ -7,8 +7,9 @@
 # stops everything before a run, the run reaches its end
 # with the fill of the 5 um span (between 1.9e5 and 2.1e5 particles, 0.05
 # of the gap and the slot), a second set-up of the same case without
-# -resume stops naming the folder, and the report writes its table (a row
-# for the case) and its plot.
+# -resume stops naming the folder, and the report writes its tables (a row
+# for the case in summary.md, and in where.md: no agglomerate after two
+# steps from a fill 100 nm apart) and its plots.
 #
 # usage: runStudyTest.sh workDir
 set -e
@@ -60,4 +61,6 @@ grep -q "study/isoelectricBrownian exists: add -resume" again.out || { cat again
 ./Allstudy -report > report.out 2>&1 || { cat report.out; fail "report"; }
 grep -q "^| isoelectricBrownian | 0.02 |" results/summary.md || { cat results/summary.md; fail "summary row"; }
 [ -s results/contacts.png ] || fail "no contacts.png"
+grep -q "^| isoelectricBrownian | 0.02 | none |" results/where.md || { cat results/where.md; fail "where row"; }
+[ -s results/where.png ] || fail "no where.png"
 echo PASS

@@ -1,0 +1,88 @@
+#!/usr/bin/env python3
+"""Where the study's report finds the agglomerates (studyReport.py,
+agglomerates()): a hand-built particle cloud in the slot coater's geometry
+(system/slotCoaterParameters of the tutorial: gap 50 um, slot 0..100 um,
+span 1.25 um), radius 0.15 um, every particle but one marked agglomerated
+as the run's analysis would:
+
+  A  a pair touching across the periodic span (z 0.1 um and span - 0.2 um),
+     under the upstream lip: one agglomerate, centre z wrapped to 1.2 um
+  B  a chain of three along x at 0.3 um spacing below the slot, beside a
+     particle with agglomerateSize 1 at contact: one agglomerate of three
+  C  a pair in the slot, above the lips
+  D  two pairs under the downstream lip, 2 % of a radius apart (beyond the
+     1 % touching gap): two agglomerates, not one
+
+Expected (by construction): 5 agglomerates with these members, centres
+(to 1e-12 m) and parts of the die.
+
+usage: testStudyWhere.py colloidFoamDir workDir
+"""
+import os
+import shutil
+import sys
+
+R = 0.15e-6
+
+
+def write_list(path, rows, fmt):
+    with open(path, "w") as f:
+        f.write("FoamFile { version 2.0; format ascii; class Cloud; object x; }\n")
+        f.write("%d\n(\n" % len(rows))
+        for r in rows:
+            f.write(fmt % r + "\n")
+        f.write(")\n")
+
+
+def main():
+    root, work = sys.argv[1:3]
+    sys.path.insert(0, os.path.join(root, "src", "python"))
+    sys.path.insert(0, os.path.join(root, "tutorials", "slotCoater"))
+    import studyReport
+
+    shutil.rmtree(work, ignore_errors=True)
+    os.makedirs(os.path.join(work, "system"))
+    shutil.copy(os.path.join(root, "tutorials", "slotCoater", "system", "slotCoaterParameters"),
+                os.path.join(work, "system"))
+    span = studyReport.geometry(work)["span"]
+    u = 1e-6
+    # (id, x, y, z, agglomerateSize)
+    parts = [(1, -10*u, 1*u, 0.1*u, 2), (2, -10*u, 1*u, span - 0.2*u, 2),               # A
+             (3, 50*u, 0.5*u, 0.5*u, 3), (4, 50.3*u, 0.5*u, 0.5*u, 3),
+             (5, 50.6*u, 0.5*u, 0.5*u, 3), (6, 50.9*u, 0.5*u, 0.5*u, 1),               # B
+             (7, 20*u, 60*u, 0.6*u, 2), (8, 20*u, 60.3*u, 0.6*u, 2),                   # C
+             (9, 120*u, 2*u, 0.3*u, 2), (10, 120.3*u, 2*u, 0.3*u, 2),
+             (11, 120.6*u + 0.02*R, 2*u, 0.3*u, 2), (12, 120.9*u + 0.02*R, 2*u, 0.3*u, 2)]  # D
+    cloud = os.path.join(work, "1e-05", "lagrangian", "particles")
+    os.makedirs(cloud)
+    write_list(os.path.join(cloud, "positions"), [(p[1], p[2], p[3], 0) for p in parts],
+               "(%.15g %.15g %.15g) %d")
+    write_list(os.path.join(cloud, "origId"), [(p[0],) for p in parts], "%d")
+    write_list(os.path.join(cloud, "U"), [(0, 0, 0)]*len(parts), "(%g %g %g)")
+    write_list(os.path.join(cloud, "d"), [(2*R,)]*len(parts), "%.15g")
+    for name in ("nContacts", "touchingParticle", "touchingWall"):
+        write_list(os.path.join(cloud, name), [(0,)]*len(parts), "%d")
+    write_list(os.path.join(cloud, "agglomerateSize"), [(p[4],) for p in parts], "%d")
+
+    t, found = studyReport.agglomerates(work)
+    expected = [([1, 2], (-10*u, 1*u, (0.1*u + span - 0.2*u - span)/2 % span),
+                 "under the upstream lip"),
+                ([7, 8], (20*u, 60.15*u, 0.6*u), "in the slot"),
+                ([3, 4, 5], (50.3*u, 0.5*u, 0.5*u), "below the slot"),
+                ([9, 10], (120.15*u, 2*u, 0.3*u), "under the downstream lip"),
+                ([11, 12], (120.75*u + 0.02*R, 2*u, 0.3*u), "under the downstream lip")]
+    ok = abs(t - 1e-5) < 1e-15 and len(found) == len(expected)
+    print("write time %g, %d agglomerates (expected %d)" % (t, len(found), len(expected)))
+    for ids, c, part in expected:
+        match = [f for f in found if f[0] == ids]
+        good = len(match) == 1 and match[0][2] == part and \
+            all(abs(match[0][1][j] - c[j]) < 1e-12 for j in range(3))
+        print("%s: %s at %s: %s" % (ids, part, ["%.4g" % x for x in c],
+                                     "ok" if good else "FAIL (found %s)" % match))
+        ok = ok and good
+    print("PASS" if ok else "FAIL")
+    return 0 if ok else 1
+
+
+if __name__ == "__main__":
+    sys.exit(main())
