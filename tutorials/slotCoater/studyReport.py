@@ -6,8 +6,9 @@ in one plot (results/contacts.png).  Where the agglomerates are at each
 case's last write (results/where.md: each agglomerate's particles by id,
 its centre, height above the substrate and part of the die; where.png:
 the centres on the die's outline): from the written particle cloud, the
-particles with agglomerateSize > 1 grouped by touching (the analysis'
-gap, 1 % of a radius, across the periodic span).
+particles with agglomerateSize > 1 grouped as the run's analysis groups
+them (gap below contactAnalysis/agglomerateGap of the smaller radius,
+constant/couplingProperties; across the periodic span).
 
     studyReport.py studyDir resultsDir
 
@@ -15,6 +16,7 @@ Run time and rate: from the case's log.colloidDEMFoam (the last
 'ExecutionTime' and 'Timing' lines; a resumed run's log covers its last
 part only)."""
 import glob
+import itertools
 import os
 import re
 import sys
@@ -24,8 +26,6 @@ sys.path.insert(0, os.path.join(os.environ.get("COLLOIDFOAM_DIR", "../.."), "src
 import contactAnalysis  # noqa: E402
 import foamDict  # noqa: E402
 import particleCloud  # noqa: E402
-
-TOUCHING = 0.01     # gap / radius within which two particles touch (the analysis')
 
 
 def cost(case):
@@ -52,6 +52,13 @@ def geometry(case):
     d = foamDict.read(os.path.join(case, "system", "slotCoaterParameters"))
     return {k: float(d[k]) for k in ("gap", "slotWidth", "slotLength", "upstreamLip",
                                      "downstreamLip", "span")}
+
+
+def agglomerate_gap(case):
+    """The analysis' bond gap over the smaller radius (couplingProperties
+    contactAnalysis/agglomerateGap; the coupling's default 0.01)"""
+    d = foamDict.read(os.path.join(case, "constant", "couplingProperties"))
+    return float(d.get("contactAnalysis", {}).get("agglomerateGap", 0.01))
 
 
 def part_of_die(g, x, y):
@@ -86,21 +93,35 @@ def agglomerates(case):
         d[2] -= g["span"]*round(d[2]/g["span"])   # periodic span
         return d
 
+    gap = agglomerate_gap(case)
+    bonds = {k: [] for k in members}
     for i, a in enumerate(members):
         for b in members[i + 1:]:
             d = offset(a, b)
             ra, rb = cloud["radius"][a], cloud["radius"][b]
-            if sum(x*x for x in d)**0.5 - ra - rb < TOUCHING*min(ra, rb):
+            if sum(x*x for x in d)**0.5 - ra - rb < gap*min(ra, rb):
                 root[find(a)] = find(b)
+                bonds[a].append(b)
+                bonds[b].append(a)
     groups = {}
     for k in members:
         groups.setdefault(find(k), []).append(k)
     found = []
     for ks in groups.values():
+        # each member's place relative to the first, summed along the bonds
+        # (an agglomerate may be wider than half the span)
         first = ks[0]
-        # centre: unwrapped about the first member across the span
-        rel = [offset(k, first) for k in ks]
-        c = [cloud["position"][first][j] + sum(r[j] for r in rel)/len(ks) for j in range(3)]
+        rel = {first: [0.0, 0.0, 0.0]}
+        todo = [first]
+        while todo:
+            a = todo.pop()
+            for b in bonds[a]:
+                if b not in rel:
+                    d = offset(b, a)
+                    rel[b] = [rel[a][j] + d[j] for j in range(3)]
+                    todo.append(b)
+        c = [cloud["position"][first][j] + sum(r[j] for r in rel.values())/len(ks)
+             for j in range(3)]
         c[2] %= g["span"]       # back into the span (the DEM's z from 0)
         found.append((sorted(cloud["id"][k] for k in ks), c, part_of_die(g, c[0], c[1])))
     return particleCloud.time(last), sorted(found, key=lambda f: f[1][0])
@@ -109,7 +130,7 @@ def agglomerates(case):
 def write_where(cases, resultsDir):
     """results/where.md and where.png"""
     rows = ["| case | write time [µs] | particles (ids) | centre x, z [µm] | "
-            "height above the substrate [µm] | part of the die |",
+            "centre's height above the substrate [µm] | part of the die |",
             "|---|---|---|---|---|---|"]
     found = {}
     for case in cases:
@@ -140,7 +161,7 @@ def write_where(cases, resultsDir):
         axis.plot([xu, xu, 0, 0], [0, g["gap"], g["gap"], top], "k-", lw=1)
         axis.plot([g["slotWidth"], g["slotWidth"], xd], [top, g["gap"], g["gap"]], "k-",
                   lw=1, label="die")
-        for marker, (name, groups) in zip("osd^v<>p", found.items()):
+        for marker, (name, groups) in zip(itertools.cycle("osd^v<>p"), found.items()):
             axis.plot([c[0]*1e6 for _, c, _ in groups], [c[1]*1e6 for _, c, _ in groups],
                       marker, ls="none", mfc="none", label="%s (%d)" % (name, len(groups)))
         axis.set_xlabel("x along the web [µm]")

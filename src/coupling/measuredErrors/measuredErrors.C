@@ -1,7 +1,9 @@
 #include "measuredErrors.H"
 #include "IFstream.H"
+#include "OStringStream.H"
 #include "HashPtrTable.H"
 #include "OSspecific.H"
+#include "Pstream.H"
 #include <cstdio>
 
 namespace Foam
@@ -16,15 +18,33 @@ static word sig3(const scalar x)
 }
 
 
-// The number an entry of a case's dictionary holds, or false if it holds
-// none (missing file or entry, a word, a sub-dictionary)
+// The number an entry holds, or false (the word none, not a number)
+static bool numberOf(const entry& e, scalar& value)
+{
+    if (e.isDict())
+    {
+        return false;
+    }
+    ITstream& is = e.stream();
+    if (is.size() != 1 || !is[0].isNumber())
+    {
+        return false;
+    }
+    value = is[0].number();
+    return true;
+}
+
+
+// The number an entry of a case's dictionary holds; otherwise false, with
+// why not
 static bool caseNumber
 (
     const fileName& caseDir,
     const fileName& file,
     const word& entryPath,
     HashPtrTable<dictionary, fileName>& files,
-    scalar& value
+    scalar& value,
+    string& whyNot
 )
 {
     if (!files.found(file))
@@ -39,30 +59,33 @@ static bool caseNumber
     const dictionary* dict = files[file];
     if (!dict)
     {
+        whyNot = "this case has no " + file;
         return false;
     }
     // '/' scoping, e.g. DEM/timeStep or SIMPLE/residualControl/p
     const entry* e = dict->findScoped(entryPath, keyType::LITERAL);
-    if (!e || e->isDict())
+    if (!e)
     {
+        whyNot = file + " has no entry " + entryPath;
         return false;
     }
-    ITstream& is = e->stream();
-    if (is.size() != 1 || !is[0].isNumber())
+    if (!numberOf(*e, value))
     {
+        whyNot = file + " entry " + entryPath + " is not a number";
         return false;
     }
-    value = is[0].number();
     return true;
 }
 
 
-// Whether every entry a rung set holds the rung's number in this case
-static bool caseIsRung
+// Whether every entry a rung set holds the rung's number in this case:
+// 1 yes, 0 no, -1 the case's entries cannot be compared (whyNot)
+static label caseIsRung
 (
     const fileName& caseDir,
     const dictionary& rungSet,
-    HashPtrTable<dictionary, fileName>& files
+    HashPtrTable<dictionary, fileName>& files,
+    string& whyNot
 )
 {
     for (const entry& e : rungSet)
@@ -78,15 +101,136 @@ static bool caseIsRung
                 s.get<fileName>("file"),
                 word(s.get<string>("entry"), false),
                 files,
-                value
+                value,
+                whyNot
             )
-         || mag(value - wanted) > 1e-9*max(mag(value), mag(wanted))
         )
         {
-            return false;
+            return -1;
+        }
+        if (mag(value - wanted) > 1e-9*max(mag(value), mag(wanted)))
+        {
+            return 0;
         }
     }
-    return true;
+    return 1;
+}
+
+
+// The report of a study file, into os
+static void report
+(
+    const fileName& caseDir,
+    const dictionary& study,
+    Ostream& os
+)
+{
+    os  << "Expected error at this case's settings, measured by"
+        << " colloidErrorStudy (errorStudy/measuredErrors, "
+        << study.get<string>("measured").c_str() << "; relative errors):"
+        << nl;
+
+    const wordList quantities(study.get<wordList>("quantities"));
+    HashPtrTable<dictionary, fileName> files;
+    for (const entry& settingEntry : study.subDict("settings"))
+    {
+        const dictionary& setting = settingEntry.dict();
+
+        const dictionary* match = nullptr;
+        string whyNot;
+        DynamicList<scalar> values;
+        for (const entry& rungEntry : setting.subDict("rungs"))
+        {
+            const dictionary& rung = rungEntry.dict();
+            values.append(rung.get<scalar>("value"));
+            if (!match && whyNot.empty())
+            {
+                const label on =
+                    caseIsRung(caseDir, rung.subDict("set"), files, whyNot);
+                if (on == 1)
+                {
+                    match = &rung;
+                }
+            }
+        }
+
+        os  << "    " << settingEntry.keyword();
+        if (!match)
+        {
+            os  << ": not measured (";
+            if (whyNot.size())
+            {
+                os  << whyNot.c_str();
+            }
+            else
+            {
+                os  << "this case's value is none of the rungs";
+                for (const scalar v : values)
+                {
+                    os  << " " << v;
+                }
+            }
+            os  << ")" << nl;
+            continue;
+        }
+        os  << " " << match->get<scalar>("value");
+        if (match->get<word>("status") != "ok")
+        {
+            os  << ": the study's run at this value failed" << nl;
+            continue;
+        }
+
+        os  << ":";
+        const dictionary& errors = match->subDict("errors");
+        for (const word& q : quantities)
+        {
+            const dictionary* qDict = errors.findDict(q);
+            scalar error = 0;
+            if (!qDict)
+            {
+                os  << " " << q << " not analysed (fewer than two rungs ran)";
+            }
+            else if (numberOf(qDict->lookupEntry("error", keyType::LITERAL), error))
+            {
+                os  << " " << q << " " << sig3(100*error) << " % ("
+                    << qDict->get<string>("source").c_str() << ")";
+            }
+            else
+            {
+                // The rung the others are measured against
+                os  << " " << q << " the reference ("
+                    << qDict->get<string>("source").c_str() << ")";
+            }
+        }
+        const scalar cost = match->get<scalar>("cost");
+        os  << "; run time " << sig3(cost) << " s";
+
+        for (const entry& c : setting.subDict("cheapest"))
+        {
+            const dictionary& cheapest = c.dict();
+            os  << "; cheapest within "
+                << sig3(100*cheapest.get<scalar>("tolerance")) << " %: ";
+            scalar value = 0, cheapestCost = 0;
+            if
+            (
+                numberOf(cheapest.lookupEntry("value", keyType::LITERAL), value)
+             && numberOf
+                (
+                    cheapest.lookupEntry("cost", keyType::LITERAL),
+                    cheapestCost
+                )
+            )
+            {
+                os  << value << " (" << sig3(cheapestCost/max(cost, VSMALL))
+                    << " x this run time)";
+            }
+            else
+            {
+                os  << "no rung";
+            }
+        }
+        os  << nl;
+    }
 }
 
 } // End namespace Foam
@@ -94,6 +238,12 @@ static bool caseIsRung
 
 void Foam::reportMeasuredErrors(const Time& runTime)
 {
+    // The master reads and prints: the report is for the log only
+    if (!Pstream::master())
+    {
+        return;
+    }
+
     const fileName caseDir(runTime.globalPath());
     const fileName studyFile(caseDir/"errorStudy"/"measuredErrors");
     if (!isFile(studyFile))
@@ -104,75 +254,23 @@ void Foam::reportMeasuredErrors(const Time& runTime)
         return;
     }
 
-    const dictionary study((IFstream(studyFile))());
-    Info<< "Expected error at this case's settings, measured by"
-        << " colloidErrorStudy (errorStudy/measuredErrors, "
-        << study.get<string>("measured").c_str() << "; relative errors):" << nl;
-
-    HashPtrTable<dictionary, fileName> files;
-    for (const entry& settingEntry : study.subDict("settings"))
+    // A file this run cannot read is reported, not fatal: what a study
+    // measured never stops a run
+    const bool throwingIO = FatalIOError.throwExceptions(true);
+    const bool throwing = FatalError.throwExceptions(true);
+    try
     {
-        const dictionary& setting = settingEntry.dict();
-        const dictionary& rungs = setting.subDict("rungs");
-
-        const dictionary* match = nullptr;
-        DynamicList<scalar> values;
-        for (const entry& rungEntry : rungs)
-        {
-            const dictionary& rung = rungEntry.dict();
-            values.append(rung.get<scalar>("value"));
-            if (!match && caseIsRung(caseDir, rung.subDict("set"), files))
-            {
-                match = &rung;
-            }
-        }
-
-        Info<< "    " << settingEntry.keyword();
-        if (!match)
-        {
-            Info<< ": not measured (this case's value is none of the rungs";
-            for (const scalar v : values)
-            {
-                Info<< " " << v;
-            }
-            Info<< ")" << nl;
-            continue;
-        }
-        Info<< " " << match->get<scalar>("value");
-        if (match->get<word>("status") != "ok")
-        {
-            Info<< ": the study's run at this value failed" << nl;
-            continue;
-        }
-
-        const scalar cost = match->get<scalar>("cost");
-        const dictionary& errors = match->subDict("errors");
-        Info<< ":";
-        if (errors.empty())
-        {
-            Info<< " no quantity analysed (fewer than two rungs ran)";
-        }
-        for (const entry& q : errors)
-        {
-            Info<< " " << q.keyword() << " "
-                << sig3(100*q.dict().get<scalar>("error")) << " % ("
-                << q.dict().get<string>("source").c_str() << ")";
-        }
-        Info<< "; run time " << sig3(cost) << " s";
-
-        for (const entry& c : setting.subDict("cheapest"))
-        {
-            const dictionary& cheapest = c.dict();
-            const scalar cheapestCost = cheapest.get<scalar>("cost");
-            Info<< "; cheapest within "
-                << sig3(100*cheapest.get<scalar>("tolerance")) << " %: "
-                << cheapest.get<scalar>("value");
-            if (cheapestCost > 0)
-            {
-                Info<< " (" << sig3(cost/cheapestCost) << "x faster)";
-            }
-        }
-        Info<< nl;
+        const dictionary study((IFstream(studyFile))());
+        OStringStream os;
+        report(caseDir, study, os);
+        Info<< os.str().c_str() << endl;
     }
-    Info<< endl;
+    catch (const Foam::error& err)
+    {
+        Info<< "Expected error: errorStudy/measuredErrors cannot be used ("
+            << err.message().c_str() << "); run colloidErrorStudy again"
+            << endl;
+    }
+    FatalIOError.throwExceptions(throwingIO);
+    FatalError.throwExceptions(throwing);
 }

@@ -11,9 +11,12 @@ as the run's analysis would:
      particle with agglomerateSize 1 at contact: one agglomerate of three
   C  a pair in the slot, above the lips
   D  two pairs under the downstream lip, 2 % of a radius apart (beyond the
-     1 % touching gap): two agglomerates, not one
+     agglomerate gap of 1 %, constant/couplingProperties): two
+     agglomerates, not one
+  E  a chain of four along z (0.2 ... 1.1 um), wider than half the span:
+     centre z 0.65 um
 
-Expected (by construction): 5 agglomerates with these members, centres
+Expected (by construction): 6 agglomerates with these members, centres
 (to 1e-12 m) and parts of the die.
 
 usage: testStudyWhere.py colloidFoamDir workDir
@@ -44,6 +47,9 @@ def main():
     os.makedirs(os.path.join(work, "system"))
     shutil.copy(os.path.join(root, "tutorials", "slotCoater", "system", "slotCoaterParameters"),
                 os.path.join(work, "system"))
+    os.makedirs(os.path.join(work, "constant"))
+    with open(os.path.join(work, "constant", "couplingProperties"), "w") as f:
+        f.write("contactAnalysis\n{\n    agglomerateGap 0.01;\n}\n")
     span = studyReport.geometry(work)["span"]
     u = 1e-6
     # (id, x, y, z, agglomerateSize)
@@ -52,7 +58,9 @@ def main():
              (5, 50.6*u, 0.5*u, 0.5*u, 3), (6, 50.9*u, 0.5*u, 0.5*u, 1),               # B
              (7, 20*u, 60*u, 0.6*u, 2), (8, 20*u, 60.3*u, 0.6*u, 2),                   # C
              (9, 120*u, 2*u, 0.3*u, 2), (10, 120.3*u, 2*u, 0.3*u, 2),
-             (11, 120.6*u + 0.02*R, 2*u, 0.3*u, 2), (12, 120.9*u + 0.02*R, 2*u, 0.3*u, 2)]  # D
+             (11, 120.6*u + 0.02*R, 2*u, 0.3*u, 2), (12, 120.9*u + 0.02*R, 2*u, 0.3*u, 2),  # D
+             (13, 80*u, 5*u, 0.2*u, 4), (14, 80*u, 5*u, 0.5*u, 4),
+             (15, 80*u, 5*u, 0.8*u, 4), (16, 80*u, 5*u, 1.1*u, 4)]                      # E
     cloud = os.path.join(work, "1e-05", "lagrangian", "particles")
     os.makedirs(cloud)
     write_list(os.path.join(cloud, "positions"), [(p[1], p[2], p[3], 0) for p in parts],
@@ -69,6 +77,7 @@ def main():
                  "under the upstream lip"),
                 ([7, 8], (20*u, 60.15*u, 0.6*u), "in the slot"),
                 ([3, 4, 5], (50.3*u, 0.5*u, 0.5*u), "below the slot"),
+                ([13, 14, 15, 16], (80*u, 5*u, 0.65*u), "below the slot"),
                 ([9, 10], (120.15*u, 2*u, 0.3*u), "under the downstream lip"),
                 ([11, 12], (120.75*u + 0.02*R, 2*u, 0.3*u), "under the downstream lip")]
     ok = abs(t - 1e-5) < 1e-15 and len(found) == len(expected)

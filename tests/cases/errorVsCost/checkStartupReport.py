@@ -6,10 +6,13 @@ the study's own table, errorStudy.csv:
              its error in each quantity and its run time equal that rung's
              row of errorStudy.csv to the 3 digits printed (relative 0.5 %);
              for each tolerance it names the rung that the CSV gives as the
-             cheapest ok rung within it, and the speed-up cost/cheapest;
+             cheapest ok rung within it and its run time over this one's
+             (or "no rung" where none is within it);
   offLadder: the case (4e-9 s) is on no rung: "not measured", naming the
              rungs;
-  noStudy:   "none measured for this case".
+  noStudy:   "none measured for this case";
+  missingEntry: "not measured", naming the file and the missing entry;
+  corrupt:   "cannot be used", and the run goes to its end.
 
 usage: checkStartupReport.py studyOutputDir workDir
 """
@@ -68,13 +71,19 @@ def main():
               close(float(m.group(3)), cost))
         for tol in (0.01, 0.05):
             within = [r for r in rows if r["status"] == "ok" and
-                      all(float(r[q + "_error"]) <= tol for q in quantities)]
+                      all(r[q + "_error"] not in ("", "–") and float(r[q + "_error"]) <= tol
+                          for q in quantities)]
+            if not within:
+                check("onRung: cheapest within %g %%: no rung (CSV: none)" % (100*tol),
+                      "cheapest within %g %%: no rung" % (100*tol) in m.group(4))
+                continue
             best = min(within, key=lambda r: float(r["cost_s"]))
-            p = re.search(r"cheapest within %g %%: (\S+) \((\S+)x faster\)" % (100*tol), m.group(4))
+            p = re.search(r"cheapest within %g %%: (\S+) \((\S+) x this run time\)" % (100*tol),
+                          m.group(4))
             check("onRung: cheapest within %g %%: %s (CSV: %s)"
                   % (100*tol, p and p.group(1), best["value"]),
                   p is not None and close(float(p.group(1)), float(best["value"]))
-                  and close(float(p.group(2)), cost/float(best["cost_s"])))
+                  and close(float(p.group(2)), float(best["cost_s"])/cost))
 
     # offLadder
     lines = report_lines(os.path.join(work, "offLadder", "log.colloidDEMFoam"))
@@ -90,6 +99,21 @@ def main():
     print("\n".join(lines))
     check("noStudy: none measured for this case",
           any(l.startswith("Expected error: none measured for this case") for l in lines))
+
+    # missingEntry
+    lines = report_lines(os.path.join(work, "missingEntry", "log.colloidDEMFoam"))
+    print("\n".join(lines))
+    check("missingEntry: not measured, the file and entry named",
+          any(re.match(r"\s*demTimeStep: not measured \(constant/couplingProperties has no "
+                       r"entry DEM/noSuchEntry\)", l) for l in lines))
+
+    # corrupt
+    log = open(os.path.join(work, "corrupt", "log.colloidDEMFoam")).read()
+    print("\n".join(l for l in log.splitlines() if l.startswith("Expected error")))
+    check("corrupt: reported as unusable",
+          re.search(r"^Expected error: errorStudy/measuredErrors cannot be used", log, re.M)
+          is not None)
+    check("corrupt: the run went to its end", re.search(r"^End\s*$", log, re.M) is not None)
 
     print("PASS" if ok else "FAIL")
     return 0 if ok else 1

@@ -5,6 +5,8 @@
 #   onRung     DEM step 1e-8 s, a rung of the study's ladder
 #   offLadder  DEM step 4e-9 s, on no rung
 #   noStudy    no errorStudy folder
+#   missingEntry  the study names an entry this case does not have
+#   corrupt    the study file cut in the middle (a run never stops for it)
 # then checkStartupReport.py compares the printed lines with the study's
 # errorStudy.csv.
 #
@@ -19,15 +21,22 @@ set -u
 
 rm -rf "$work"
 mkdir -p "$work"
-for variant in onRung offLadder noStudy
+for variant in onRung offLadder noStudy missingEntry corrupt
 do
     dir=$work/$variant
     cp -r "$study/errorStudy/demTimeStep/1_1e-08" "$dir"
     sed -i "s/^endTime .*/endTime 2e-08;/" "$dir/system/controlDict"
     case $variant in
-        onRung|offLadder)
+        onRung|offLadder|missingEntry|corrupt)
             mkdir "$dir/errorStudy"
             cp "$study/errorStudy/measuredErrors" "$dir/errorStudy/" ;;
+    esac
+    case $variant in
+        missingEntry)
+            sed -i 's#entry "DEM/couplingInterval"#entry "DEM/noSuchEntry"#' \
+                "$dir/errorStudy/measuredErrors" ;;
+        corrupt)
+            head -c 600 "$study/errorStudy/measuredErrors" > "$dir/errorStudy/measuredErrors" ;;
     esac
     if [ "$variant" = offLadder ]
     then
@@ -35,6 +44,7 @@ do
                -e "s/^\( *couplingInterval \+\)[^;]*;/\15;/" \
             "$dir/constant/couplingProperties"
     fi
-    (cd "$dir" && colloidDEMFoam > log.colloidDEMFoam 2>&1)
+    (cd "$dir" && colloidDEMFoam > log.colloidDEMFoam 2>&1) \
+        || { tail -30 "$dir/log.colloidDEMFoam"; echo "FAIL: $variant run"; exit 1; }
 done
 /usr/bin/python3 "$here/checkStartupReport.py" "$study/errorStudy" "$work"
