@@ -4,6 +4,7 @@
 ------------------------------------------------------------------------- */
 
 #include "fix_colloid_implicit.h"
+#include "colloid_append_fix.h"
 
 #include <algorithm>
 #include <cmath>
@@ -127,17 +128,7 @@ FixColloidImplicit *FixColloidImplicit::attach(LAMMPS *lmp)
     std::strcpy(style, fixStyle);
     char *arg[3] = {id, group, style};
     fix = new FixColloidImplicit(lmp, 3, arg);
-    // appended as Modify::add_fix does it
-    if (modify->nfix == modify->maxfix)
-    {
-        modify->maxfix += 16;
-        modify->fix = (Fix **) lmp->memory->srealloc(modify->fix,
-            modify->maxfix*sizeof(Fix *), "modify:fix");
-        lmp->memory->grow(modify->fmask, modify->maxfix, "modify:fmask");
-    }
-    modify->fix[modify->nfix] = fix;
-    modify->fmask[modify->nfix] = fix->setmask();
-    modify->nfix++;
+    Colloid::colloidAppendFix(lmp, fix);
     return fix;
 }
 

@@ -5,6 +5,7 @@
 
 #include "register_colloid_models.h"
 #include "fix_colloid_implicit.h"
+#include "fix_colloid_reneighbor.h"
 #include "register_variant.h"
 
 using namespace LIGGGHTS;
@@ -41,6 +42,11 @@ extern "C" void colloidImplicitUpdate(void *lmp)
 extern "C" void colloidDragCallback(void *lmp, void (*callback)(void *), void *context)
 {
     LAMMPS_NS::FixColloidImplicit::setDragCallback(static_cast<LAMMPS_NS::LAMMPS *>(lmp), callback, context);
+}
+
+extern "C" void colloidReneighborAt(void *lmp, long long step)
+{
+    LAMMPS_NS::FixColloidReneighbor::at(static_cast<LAMMPS_NS::LAMMPS *>(lmp), step);
 }
 
 namespace {

@@ -27,6 +27,12 @@
    property values they were inserted with (no drag) until the coupling
    sets them. A NULL callback removes the hook; the hook outlives the
    fix's re-creation by colloidImplicitUpdate.
+
+   colloidReneighborAt(lmp, step) rebuilds the neighbour lists of lmp at
+   the given DEM step (fix_colloid_reneighbor.h: what a fix does at the
+   rebuild, e.g. massflow/mesh deleting the particles it counted, is
+   done before a restart is written after that step).  The first call
+   creates the fix: make it before the first run (step -1: none yet).
 ------------------------------------------------------------------------- */
 
 #ifndef COLLOID_REGISTER_COLLOID_MODELS_H
@@ -39,6 +45,11 @@ extern "C" __attribute__((visibility("default"))) void colloidDragCallback
     void *lmp,
     void (*callback)(void *context),
     void *context
+);
+extern "C" __attribute__((visibility("default"))) void colloidReneighborAt
+(
+    void *lmp,
+    long long step
 );
 
 #endif

@@ -87,6 +87,26 @@ foreach(nProcs 1 2)
         TIMEOUT 60 LABELS "case;reliability" PROCESSORS ${nProcs})
 endforeach()
 
+# reliability.outflowResume.<serial|parallel>: a particle an outflow
+#   (massflow/mesh, delete_atoms) counted 2.5 DEM steps before a write,
+#   not yet deleted by LIGGGHTS (it deletes at the next rebuild of the
+#   neighbour lists): the rebuild the coupling asks for before each write
+#   deletes it, so that a run resumed from that write does not lose it
+#   (runOutflowResumeTest.sh).
+foreach(mode serial parallel)
+    add_test(NAME case.reliability.outflowResume.${mode}
+        COMMAND ${reliabilityDir}/runOutflowResumeTest.sh ${mode}
+                ${reliabilityWork}/outflowResume_${mode})
+    if(mode STREQUAL parallel)
+        set(nProcs 2)
+    else()
+        set(nProcs 1)
+    endif()
+    set_tests_properties(case.reliability.outflowResume.${mode} PROPERTIES
+        TIMEOUT 120 LABELS "case;reliability" PROCESSORS ${nProcs}
+        PASS_REGULAR_EXPRESSION "PASS")
+endforeach()
+
 add_test(NAME case.reliability.outsideFluid
     COMMAND ${reliabilityDir}/runOutsideFluidTest.sh ${reliabilityWork}/outsideFluid)
 set_tests_properties(case.reliability.outsideFluid PROPERTIES

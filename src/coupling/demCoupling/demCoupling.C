@@ -1225,10 +1225,13 @@ void Foam::demCoupling::evolve()
             voidfraction_->oldTime();
         }
 
-        // This step's time folder will be written: no stale DEM state in it
+        // This step's time folder will be written: no stale DEM state in
+        // it, and no particle that an outflow counted but has not deleted
+        // yet (it would be kept by the restart and lost after a resume)
         if (mesh_.time().writeTime())
         {
             restart_.invalidate();
+            dem.reneighbourAt(dem.timeStep() + props_.couplingInterval());
         }
 
         // The run's time less that of coupling the particles it inserted

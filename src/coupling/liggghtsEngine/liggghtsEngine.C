@@ -339,7 +339,16 @@ void Foam::liggghtsEngine::implicitDamping()
 {
     liggghtsCall call;
     registerColloidModels();
+    // Before the implicit update: that fix stays last (its set-up must
+    // follow the walls')
+    colloidReneighborAt(lmp_, -1);
     colloidImplicitUpdate(lmp_);
+}
+
+
+void Foam::liggghtsEngine::reneighbourAt(const long step)
+{
+    colloidReneighborAt(lmp_, step);
 }
 
 
