@@ -15,12 +15,14 @@ killTime=${4:-1.2e-06}
 here=$(cd "$(dirname "$0")" && pwd)
 source "$here/copyFixture.sh"
 
-# Back to the state before the particle run: only the time 0
+# Back to the state before the particle run: only the time 0 (in the case
+# and its processor folders, if any: an unmatched processor* is skipped)
 removeLaterTimes()
 {
     local dir
     for dir in "$@"
     do
+        [ -d "$dir" ] || continue
         find "$dir" -mindepth 1 -maxdepth 1 -type d -regex '.*/[-+.0-9eE]+' \
             ! -name 0 -exec rm -rf {} +
     done
