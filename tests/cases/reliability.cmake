@@ -29,6 +29,11 @@
 #   on 2 ranks) and a periodic face, all found and named before LIGGGHTS'
 #   set-up (runOverlapTest.sh); reliability.overlaps.warning: a pair
 #   overlapping by 5 % only warns, naming it, and the run goes on.
+# reliability.overlaps.inserted.<serial|parallel>: the same check for a
+#   particle the script inserts during the run, 3 um from one present
+#   from the start (across LIGGGHTS' processor boundary on 2 ranks): the
+#   log's smallest gap names the pair and gives 3 um within 0.02 um, and
+#   a closer pair of particles present from the start does not count.
 # reliability.outsideFluid: a particle outside the fluid mesh at the start
 #   is counted and named (id, position) in a warning; the run goes on.
 # coupling.badInput.<resumeIncomplete, misspeltKeyword, misspeltTopKeyword,
@@ -111,6 +116,18 @@ add_test(NAME case.reliability.outsideFluid
     COMMAND ${reliabilityDir}/runOutsideFluidTest.sh ${reliabilityWork}/outsideFluid)
 set_tests_properties(case.reliability.outsideFluid PROPERTIES
     TIMEOUT 60 LABELS "case;reliability")
+
+foreach(nProcs 1 2)
+    set(name case.reliability.overlaps.inserted.serial)
+    if(nProcs EQUAL 2)
+        set(name case.reliability.overlaps.inserted.parallel)
+    endif()
+    add_test(NAME ${name}
+        COMMAND ${reliabilityDir}/runOverlapTest.sh ${nProcs}
+                ${reliabilityWork}/overlapsInserted_${nProcs} inserted)
+    set_tests_properties(${name} PROPERTIES
+        TIMEOUT 60 LABELS "case;reliability" PROCESSORS ${nProcs})
+endforeach()
 
 add_test(NAME case.reliability.overlaps.warning
     COMMAND ${reliabilityDir}/runOverlapTest.sh 1

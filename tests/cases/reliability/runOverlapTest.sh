@@ -12,7 +12,18 @@
 # only warns: the run must go on to its end (exit 0), the warning naming
 # the pair.
 #
-#   runOverlapTest.sh nProcs workDir [warn]
+# With "inserted": the check of the particles a script inserts during the
+# run.  Particle 1 at z = 450 um; at DEM step 1 'fix insert/pack' puts
+# particle 4 in a region 0.01 um wide around z = 503 um (same x, y;
+# diameters 50 um: gap 3 um), across the mid-plane z = 500 (LIGGGHTS'
+# processor boundary on 2 ranks: its grid is 1 by 1 by 2);
+# particles 2 and 3, present from the start, are 1 um apart and must not
+# count.  The log's "Inserted particles: smallest gap" must name 1 and 4
+# and give 3 um within 0.02 um (the region's width, and the settling of
+# the two in y over the 10 steps to the check: their centres' offset in
+# y is below 0.1 um, which changes the gap by 5e-5 um).
+#
+#   runOverlapTest.sh nProcs workDir [warn|inserted]
 set -e
 nProcs=$1
 work=$2
@@ -24,12 +35,26 @@ rm -rf "$work"
 mkdir -p "$(dirname "$work")"
 cp -r "$here/../twoWay/periodicBox" "$work"
 cd "$work"
+
+# writeSpheres title "x y z" ...: the case's data file, spheres of 50 um
+# (density 2.5 pg/um^3) at the given centres [um], ids from 1
+writeSpheres()
+{
+    local title=$1 id=0 centre
+    shift
+    printf '%s\n' "LIGGGHTS data file: $title" "" "$# atoms" "1 atom types" "" \
+        "0 1000 xlo xhi" "0 1000 ylo yhi" "0 1000 zlo zhi" "" "Atoms" ""
+    for centre in "$@"
+    do
+        id=$((id + 1))
+        echo "$id 1 50 2.5 $centre"
+    done
+} > constant/DEM/suspension.data
+
 if [ "$mode" = warn ]
 then
-    printf '%s\n' "LIGGGHTS data file: 1 pair overlapping by 5 %" "" "3 atoms" \
-        "1 atom types" "" "0 1000 xlo xhi" "0 1000 ylo yhi" "0 1000 zlo zhi" \
-        "" "Atoms" "" "1 1 50 2.5 475.625 300 300" "2 1 50 2.5 524.375 300 300" \
-        "3 1 50 2.5 100 700 700" > constant/DEM/suspension.data
+    writeSpheres "1 pair overlapping by 5 %" \
+        "475.625 300 300" "524.375 300 300" "100 700 700"
     foamDictionary system/controlDict -entry endTime -set 4e-4 > /dev/null
     blockMesh > log.blockMesh 2>&1
     colloidDEMFoam > log.colloidDEMFoam 2>&1 \
@@ -42,19 +67,54 @@ then
     echo PASS
     exit 0
 fi
-{
-    printf '%s\n' "LIGGGHTS data file: 4 overlapping pairs" "" "14 atoms" \
-        "1 atom types" "" "0 1000 xlo xhi" "0 1000 ylo yhi" "0 1000 zlo zhi" \
-        "" "Atoms" ""
-    id=0
-    atom() { id=$((id + 1)); echo "$id 1 50 2.5 $1 $2 $3"; }
-    atom 477.5 200 200;  atom 522.5 200 200     # across x = 500
-    atom 200 477.5 800;  atom 200 522.5 800     # across y = 500
-    atom 800 800 477.5;  atom 800 800 522.5     # across z = 500
-    atom 10 600 600;     atom 965 600 600       # across the periodic face
-    atom 100 100 100;    atom 300 300 300;  atom 700 100 300
-    atom 100 700 300;    atom 300 900 900;  atom 900 300 100
-} > constant/DEM/suspension.data
+if [ "$mode" = inserted ]
+then
+    writeSpheres "3 spheres, 2 and 3 1 um apart" \
+        "300 300 450" "200 700 700" "251 700 700"
+    cat >> constant/DEM/in.liggghts << 'EOI'
+
+# One sphere inserted at DEM step 1, its centre within 0.005 um of
+# (300, 300, 503) um (diameter 50 um).  'overlapcheck no': with it,
+# insert/pack places no centre within a radius of a processor boundary
+fix             insertTemplate all particletemplate/sphere 15485863 atom_type 1 &
+                density constant ${colloid_density} radius constant ${colloid_radius}
+fix             insertDistribution all particledistribution/discrete 32452843 1 insertTemplate 1.0
+region          insertRegion block 299.995 300.005 299.995 300.005 502.995 503.005 units box
+fix             insert all insert/pack seed 49979687 distributiontemplate insertDistribution &
+                insert_every once overlapcheck no all_in no start 1 &
+                particles_in_region 1 region insertRegion
+EOI
+    foamDictionary system/controlDict -entry endTime -set 4e-4 > /dev/null
+    blockMesh > log.blockMesh 2>&1
+    if [ "$nProcs" -gt 1 ]
+    then
+        decomposePar > log.decomposePar 2>&1
+        mpirun -np "$nProcs" colloidDEMFoam -parallel > log.colloidDEMFoam 2>&1 \
+            || { echo "FAIL: the run stopped"; tail -20 log.colloidDEMFoam; exit 1; }
+    else
+        colloidDEMFoam > log.colloidDEMFoam 2>&1 \
+            || { echo "FAIL: the run stopped"; tail -20 log.colloidDEMFoam; exit 1; }
+    fi
+    line=$(grep -a "^Inserted particles" log.colloidDEMFoam || true)
+    echo "$line"
+    [ "$(grep -a -c "^Inserted particles" log.colloidDEMFoam)" -eq 1 ] \
+        || { echo "FAIL: not one 'Inserted particles' line"; exit 1; }
+    echo "$line" | awk '{
+        gap = $5*1e6
+        ok = ($0 ~ /between particles 1 and 4$/) && gap > 2.98 && gap < 3.02
+        printf "smallest gap %.5f um (3 +- 0.02 um), pair 1-4: %s\n", gap, ok ? "yes" : "no"
+        exit !ok }' || { echo FAIL; exit 1; }
+    echo PASS
+    exit 0
+fi
+writeSpheres "4 overlapping pairs" \
+    "477.5 200 200" "522.5 200 200" \
+    "200 477.5 800" "200 522.5 800" \
+    "800 800 477.5" "800 800 522.5" \
+    "10 600 600"    "965 600 600" \
+    "100 100 100" "300 300 300" "700 100 300" \
+    "100 700 300" "300 900 900" "900 300 100"
+# (pairs across x, y, z = 500 and the periodic face x = 0, then six apart)
 blockMesh > log.blockMesh 2>&1
 if [ "$nProcs" -gt 1 ]
 then
