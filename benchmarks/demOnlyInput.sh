@@ -39,14 +39,16 @@ demOnlyInput()
         > constant/couplingProperties.expanded \
         || { echo "demOnlyInput: cannot read constant/couplingProperties" 1>&2; return 1; }
     # SI -> micro units: m -> um; kg/m^3 -> pg/um^3 (1e-3); Pa s -> pg/(um us) (1e3)
-    local d rhoP rhoF nu dt
+    # (the fluid's viscosity as mu [Pa s] or nu [m^2/s], as the solver takes it)
+    local d rhoP rhoF mu dt
     d=$(demCouplingEntry particles/diameter)
     rhoP=$(demCouplingEntry particles/density)
     rhoF=$(demCouplingEntry fluid/rho)
-    nu=$(demCouplingEntry fluid/nu)
+    mu=$(demCouplingEntry fluid/mu 2> /dev/null) \
+        || mu=$(awk -v rf="$rhoF" -v nu="$(demCouplingEntry fluid/nu)" 'BEGIN { printf "%.10g", rf*nu }')
     dt=$(demCouplingEntry DEM/timeStep)
     rm -f constant/couplingProperties.expanded
-    awk -v d="$d" -v rp="$rhoP" -v rf="$rhoF" -v nu="$nu" -v dt="$dt" -v casedir="$PWD" 'BEGIN {
+    awk -v d="$d" -v rp="$rhoP" -v rf="$rhoF" -v mu="$mu" -v dt="$dt" -v casedir="$PWD" 'BEGIN {
         print "units           micro"
         print "atom_modify     map array"
         printf "variable        colloid_case string %s\n", casedir
@@ -54,7 +56,7 @@ demOnlyInput()
         printf "variable        colloid_radius equal %.10g\n", d*0.5e6
         printf "variable        colloid_density equal %.10g\n", rp*1e-3
         printf "variable        colloid_fluid_density equal %.10g\n", rf*1e-3
-        printf "variable        colloid_fluid_viscosity equal %.10g\n", rf*nu*1e3
+        printf "variable        colloid_fluid_viscosity equal %.10g\n", mu*1e3
         printf "variable        colloid_timestep equal %.10g\n", dt*1e6
         print "variable        colloid_restart equal 0"
         print "variable        colloid_restart_file string none"

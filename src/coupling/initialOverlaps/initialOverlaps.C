@@ -192,7 +192,8 @@ void Foam::checkInitialOverlaps
     // below one largest radius is closer than h).  Without it every
     // insertion hashed all particles (0.36 s at 2e5 particles, a third of
     // the coupling's work in a 1000-step benchmark run with one
-    // insertion; now the cost grows with the particles inserted).
+    // insertion); now the hashing and the pair search grow with the
+    // particles inserted, the gathering above stays a pass over all.
     boundBox reach(boundBox::invertedBox);
     forAll(candidates.x, j)
     {

@@ -35,5 +35,6 @@ python3 "$here/makeShearParticles.py" 2000 0.5 25 75 98 48 1.0 \
 includeParticles particles.liggghts
 meshAndQuiescentFluid
 runChannelSolver "$mode"
-grep "^Brownian motion" log.colloidDEMFoam
+grep "^Brownian motion" log.colloidDEMFoam \
+    || { echo "FAIL: no 'Brownian motion' line in log.colloidDEMFoam"; exit 1; }
 python3 "$here/checkBrownian.py" . $( [ "$mode" = parallel ] && echo "$(dirname "$work")/brownian_serial" )

@@ -48,7 +48,7 @@ value() { awk -v k="$2" '$1 == k { sub(";", "", $2); print $2; exit }' "$1"; }
 grep -q "^Brownian motion: 293.15 K, seed 1" $case/log.colloidDEMFoam || fail "no Brownian motion"
 grep -q "^variable zetaPotential equal 0$" $case/DEM/slotCoater.liggghts || fail "zeta not written for the DEM"
 [ -f $case/2e-08/uniform/colloidCoupling ] || fail "the run did not reach 2e-08"
-n=$(awk '/^Particles: present/ { print $3 }' $case/log.colloidDEMFoam | tail -1)
+n=$(awk '/^Particles: present/ { sub(",", "", $3); print $3 }' $case/log.colloidDEMFoam | tail -1)
 echo "particles present at the end: $n"
 awk -v n="$n" 'BEGIN { exit !(n >= 1.9e5 && n <= 2.1e5) }' || fail "$n particles, not the 5 um span's 2.0e5"
 

@@ -16,7 +16,7 @@
 # run.  Particle 1 at z = 450 um; at DEM step 1 'fix insert/pack' puts
 # particle 4 in a region 0.01 um wide around z = 503 um (same x, y;
 # diameters 50 um: gap 3 um), across the mid-plane z = 500 (LIGGGHTS'
-# processor boundary on 2 ranks: its grid is 1 by 1 by 2);
+# processor boundary on 2 ranks: the test sets its grid to 1 by 1 by 2);
 # particles 2 and 3, present from the start, are 1 um apart and must not
 # count.  The log's "Inserted particles: smallest gap" must name 1 and 4
 # and give 3 um within 0.02 um (the region's width, and the settling of
@@ -88,6 +88,7 @@ EOI
     blockMesh > log.blockMesh 2>&1
     if [ "$nProcs" -gt 1 ]
     then
+        sed -i 's/^read_data/processors      1 1 2\n&/' constant/DEM/in.liggghts
         decomposePar > log.decomposePar 2>&1
         mpirun -np "$nProcs" colloidDEMFoam -parallel > log.colloidDEMFoam 2>&1 \
             || { echo "FAIL: the run stopped"; tail -20 log.colloidDEMFoam; exit 1; }
