@@ -21,7 +21,7 @@
 # count.  The log's "Inserted particles: smallest gap" must name 1 and 4
 # and give 3 um within 0.02 um (the region's width, and the settling of
 # the two in y over the 10 steps to the check: their centres' offset in
-# y is below 0.1 um, which changes the gap by 5e-5 um).
+# y is below 0.1 um, which changes the gap by less than 1e-4 um).
 #
 #   runOverlapTest.sh nProcs workDir [warn|inserted]
 set -e
