@@ -191,10 +191,6 @@ void Foam::particleDeposit::deposit
     List<DynamicList<depositShare>> toProc(nProcs);
     List<DynamicList<depositShare>> toOrigin(nProcs);
 
-    const cellList& cells = mesh_.cells();
-    const labelList& own = mesh_.faceOwner();
-    const vectorField& faceNormal = locator_.faceNormals();
-    const vectorField& Cf = mesh_.faceCentres();
     DynamicList<vector> crossedNormal(8);
     DynamicList<scalar> crossedDist(8);
 
@@ -211,14 +207,12 @@ void Foam::particleDeposit::deposit
         // normal and the centre's distance inside the plane
         crossedNormal.clear();
         crossedDist.clear();
-        for (const label facei : cells[celli])
+        for (const cellPlane& plane : locator_.planes(celli))
         {
-            const vector n =
-                ((own[facei] == celli) ? 1 : -1)*faceNormal[facei];
-            const scalar inside = -((x[i] - Cf[facei]) & n);
+            const scalar inside = -((x[i] - plane.centre) & plane.normal);
             if (inside < R)
             {
-                crossedNormal.append(n);
+                crossedNormal.append(plane.normal);
                 crossedDist.append(inside);
             }
         }

@@ -8,7 +8,8 @@ Foam::particleLocator::particleLocator(const polyMesh& mesh)
     mesh_(mesh),
     search_(mesh, polyMesh::CELL_TETS),
     wallTree_(),
-    faceNormal_(mesh.faceAreas()/mag(mesh.faceAreas())),
+    planes_(),
+    planeStart_(mesh.nCells() + 1, 0),
     convexCell_(mesh.nCells(), true),
     wallLowerBound_(mesh.nCells(), GREAT),
     nGlobalSearches_(0)
@@ -40,6 +41,32 @@ Foam::particleLocator::particleLocator(const polyMesh& mesh)
             if (!convexCell_[celli])
             {
                 break;
+            }
+        }
+    }
+
+    {
+        const cellList& cells = mesh.cells();
+        const labelList& nei = mesh.faceNeighbour();
+        const vectorField faceNormal(Sf/mag(Sf));
+        forAll(cells, celli)
+        {
+            planeStart_[celli + 1] = planeStart_[celli] + cells[celli].size();
+        }
+        planes_.setSize(planeStart_.last());
+        label k = 0;
+        forAll(cells, celli)
+        {
+            for (const label facei : cells[celli])
+            {
+                const bool owner = (own[facei] == celli);
+                cellPlane& plane = planes_[k++];
+                plane.centre = Cf[facei];
+                plane.normal = owner ? faceNormal[facei] : -faceNormal[facei];
+                plane.face = facei;
+                plane.across =
+                    !mesh.isInternalFace(facei) ? -1
+                  : owner ? nei[facei] : own[facei];
             }
         }
     }
@@ -104,30 +131,27 @@ Foam::label Foam::particleLocator::walk
 ) const
 {
     exitFace = -1;
-    const cellList& cells = mesh_.cells();
-    const labelList& own = mesh_.faceOwner();
-    const labelList& nei = mesh_.faceNeighbour();
-    const vectorField& Cf = mesh_.faceCentres();
 
     for (label step = 0; step < maxWalkSteps_; ++step)
     {
         lastCell = celli;
+        const label first = planeStart_[celli];
+        const label last = planeStart_[celli + 1];
 
         // Face whose plane p lies furthest outside of
-        exitFace = -1;
+        label exitPlane = -1;
         scalar exitDist = 0;
-        for (const label facei : cells[celli])
+        for (label k = first; k < last; ++k)
         {
-            const scalar sign = (own[facei] == celli) ? 1 : -1;
-            const scalar d = sign*((p - Cf[facei]) & faceNormal_[facei]);
+            const scalar d = (p - planes_[k].centre) & planes_[k].normal;
             if (d > exitDist)
             {
                 exitDist = d;
-                exitFace = facei;
+                exitPlane = k;
             }
         }
 
-        if (exitFace < 0)
+        if (exitPlane < 0)
         {
             // Inside every face plane: inside a convex cell; else confirm
             // with the tet decomposition
@@ -139,38 +163,39 @@ Foam::label Foam::particleLocator::walk
             {
                 return celli;
             }
-            for (const label facei : cells[celli])
+            for (label k = first; k < last; ++k)
             {
-                if (mesh_.isInternalFace(facei))
+                const label other = planes_[k].across;
+                if
+                (
+                    other >= 0
+                 && mesh_.pointInCell(p, other, polyMesh::CELL_TETS)
+                )
                 {
-                    const label other =
-                        (own[facei] == celli) ? nei[facei] : own[facei];
-                    if (mesh_.pointInCell(p, other, polyMesh::CELL_TETS))
-                    {
-                        return other;
-                    }
+                    return other;
                 }
             }
             // Not in a face neighbour of this mesh part: report the
             // boundary face whose plane is nearest (e.g. a processor face:
             // the neighbour rank continues from the cell behind it)
             scalar nearest = -GREAT;
-            for (const label facei : cells[celli])
+            for (label k = first; k < last; ++k)
             {
-                if (!mesh_.isInternalFace(facei))
+                if (planes_[k].across < 0)
                 {
-                    const scalar sign = (own[facei] == celli) ? 1 : -1;
                     const scalar d =
-                        sign*((p - Cf[facei]) & faceNormal_[facei]);
+                        (p - planes_[k].centre) & planes_[k].normal;
                     if (d > nearest)
                     {
                         nearest = d;
-                        exitFace = facei;
+                        exitFace = planes_[k].face;
                     }
                 }
             }
             return -1;
         }
+
+        exitFace = planes_[exitPlane].face;
 
         // Slightly outside a face plane: a concave (polyhedral) cell may
         // still hold p.  Test before stepping, or the walk can oscillate
@@ -186,13 +211,13 @@ Foam::label Foam::particleLocator::walk
             return celli;
         }
 
-        if (!mesh_.isInternalFace(exitFace))
+        if (planes_[exitPlane].across < 0)
         {
             // Left this mesh part through a boundary face
             return -1;
         }
 
-        celli = (own[exitFace] == celli) ? nei[exitFace] : own[exitFace];
+        celli = planes_[exitPlane].across;
     }
 
     // Did not settle: gave up inside the mesh
