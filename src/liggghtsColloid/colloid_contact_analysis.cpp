@@ -81,31 +81,49 @@ std::vector<uint64_t> exchange(MPI_Comm world, const std::vector<std::vector<uin
     return in;
 }
 
-// the values of every rank, on rank 0
+// The rank in world of MPI_COMM_WORLD's rank 0: in a coupled run the
+// solver's master, which writes the analysis (the coupling may give
+// LIGGGHTS its ranks in another order, to match the fluid's parts); in a
+// LIGGGHTS run of its own, rank 0
+int masterRank(MPI_Comm world)
+{
+    MPI_Group worldGroup, demGroup;
+    MPI_Comm_group(MPI_COMM_WORLD, &worldGroup);
+    MPI_Comm_group(world, &demGroup);
+    const int zero = 0;
+    int master = MPI_UNDEFINED;
+    MPI_Group_translate_ranks(worldGroup, 1, &zero, demGroup, &master);
+    MPI_Group_free(&worldGroup);
+    MPI_Group_free(&demGroup);
+    return master == MPI_UNDEFINED ? 0 : master;
+}
+
+// the values of every rank, on the master
 template<class T>
-std::vector<T> gatherOnZero(MPI_Comm world, const std::vector<T> &mine, MPI_Datatype type)
+std::vector<T> gatherOnMaster(MPI_Comm world, const std::vector<T> &mine, MPI_Datatype type)
 {
     int nprocs, me;
     MPI_Comm_size(world, &nprocs);
     MPI_Comm_rank(world, &me);
+    const int master = masterRank(world);
     const int n = static_cast<int>(mine.size());
     std::vector<int> counts(nprocs), displ(nprocs);
-    MPI_Gather(&n, 1, MPI_INT, counts.data(), 1, MPI_INT, 0, world);
+    MPI_Gather(&n, 1, MPI_INT, counts.data(), 1, MPI_INT, master, world);
     int total = 0;
     for (int p = 0; p < nprocs; p++)
     {
         displ[p] = total;
         total += counts[p];
     }
-    std::vector<T> all(me == 0 ? total : 0);
-    MPI_Gatherv(mine.data(), n, type, all.data(), counts.data(), displ.data(), type, 0, world);
+    std::vector<T> all(me == master ? total : 0);
+    MPI_Gatherv(mine.data(), n, type, all.data(), counts.data(), displ.data(), type, master, world);
     return all;
 }
 
-long sumOnZero(MPI_Comm world, long mine)
+long sumOnMaster(MPI_Comm world, long mine)
 {
     long sum = 0;
-    MPI_Reduce(&mine, &sum, 1, MPI_LONG, MPI_SUM, 0, world);
+    MPI_Reduce(&mine, &sum, 1, MPI_LONG, MPI_SUM, masterRank(world), world);
     return sum;
 }
 
@@ -222,15 +240,15 @@ ColloidContactAnalysis::Result ColloidContactAnalysis::analyse(double t, const i
     update(walls_, sendToOwners(wallKeys), t, wallFormed, wallBroken, wallDurations);
     first_ = false;
 
-    result.particles = sumOnZero(world, nlocal);
-    result.pairContacts = sumOnZero(world, static_cast<long>(pairKeys.size()));
-    result.wallContacts = sumOnZero(world, static_cast<long>(wallKeys.size()));
-    result.pairFormed = sumOnZero(world, pairFormed);
-    result.pairBroken = sumOnZero(world, pairBroken);
-    result.wallFormed = sumOnZero(world, wallFormed);
-    result.wallBroken = sumOnZero(world, wallBroken);
-    result.pairDurations = gatherOnZero(world, pairDurations, MPI_DOUBLE);
-    result.wallDurations = gatherOnZero(world, wallDurations, MPI_DOUBLE);
+    result.particles = sumOnMaster(world, nlocal);
+    result.pairContacts = sumOnMaster(world, static_cast<long>(pairKeys.size()));
+    result.wallContacts = sumOnMaster(world, static_cast<long>(wallKeys.size()));
+    result.pairFormed = sumOnMaster(world, pairFormed);
+    result.pairBroken = sumOnMaster(world, pairBroken);
+    result.wallFormed = sumOnMaster(world, wallFormed);
+    result.wallBroken = sumOnMaster(world, wallBroken);
+    result.pairDurations = gatherOnMaster(world, pairDurations, MPI_DOUBLE);
+    result.wallDurations = gatherOnMaster(world, wallDurations, MPI_DOUBLE);
 
     int most = 0, mostAll = 0;
     for (int c : contacts_) most = std::max(most, c);
@@ -323,7 +341,7 @@ void ColloidContactAnalysis::findAgglomerates(Result &result)
         if (bonded[i]) size_[i] = sizeOf[static_cast<uint64_t>(label[i])];
     }
 
-    // the size distribution, from the owners, on rank 0
+    // the size distribution, from the owners, on the master
     std::map<long, long> mine;
     for (const auto &c : total) mine[static_cast<long>(c.second)]++;
     std::vector<long> flat;
@@ -332,7 +350,7 @@ void ColloidContactAnalysis::findAgglomerates(Result &result)
         flat.push_back(c.first);
         flat.push_back(c.second);
     }
-    const std::vector<long> all = gatherOnZero(world, flat, MPI_LONG);
+    const std::vector<long> all = gatherOnMaster(world, flat, MPI_LONG);
     for (size_t k = 0; k < all.size(); k += 2)
     {
         result.agglomerateSizes[all[k]] += all[k + 1];

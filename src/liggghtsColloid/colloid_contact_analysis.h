@@ -8,7 +8,8 @@
    is a connected cluster of at least two particles bonded by gaps below
    agglomerateGap times the smaller radius (the same threshold by default).
 
-   What each analysis gives (all ranks together, on rank 0):
+   What each analysis gives (all ranks together, on the master: the rank that is
+   MPI_COMM_WORLD's rank 0, the coupled solver's master):
    - particle-particle and particle-wall contacts, and those formed and
      broken since the last analysis; the duration of each contact that
      ended (from the analysis that first saw it to the one that no longer
@@ -48,7 +49,7 @@ public:
         double agglomerateGap = 0.01;   // of the smaller radius
     };
 
-    // Global figures of one analysis (complete on rank 0)
+    // Global figures of one analysis (complete on the master)
     struct Result
     {
         long particles = 0;

@@ -4,8 +4,9 @@
    not include LIGGGHTS' headers (the OpenFOAM coupling). The handle is
    the analysis object; every call but the accessors is collective (all
    ranks of the LIGGGHTS instance). The global figures and lists are
-   complete on rank 0 after colloidContactAnalyse; the per-atom arrays are
-   each rank's local atoms, in LIGGGHTS' order, valid until the next run.
+   complete on the master (MPI_COMM_WORLD's rank 0) after
+   colloidContactAnalyse; the per-atom arrays are each rank's local atoms,
+   in LIGGGHTS' order, valid until the next run.
 ------------------------------------------------------------------------- */
 
 #ifndef COLLOID_CONTACT_ANALYSIS_API_H

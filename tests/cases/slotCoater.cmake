@@ -10,6 +10,12 @@
 # slotCoater.serialVsParallel: from the same initial fill, the two runs
 #   insert, hold and remove the same particles and agree on their mean
 #   velocity within 1 %.
+# slotCoater.rankMatching (label throughput too: issue 11): the parallel
+#   run again with METIS' two parts swapped: the DEM's ranks are reordered
+#   so that each subdomain is on the rank of its cells, the records that
+#   cross ranks are those of the unmatched fluid volume, the contact
+#   analysis still counts every particle, and a resume gives the particles
+#   of the uninterrupted run (runRankMatchingTest.sh).
 
 set(slotCoaterDir ${CMAKE_CURRENT_SOURCE_DIR}/slotCoater)
 set(slotCoaterWork ${CMAKE_CURRENT_BINARY_DIR}/slotCoater)
@@ -30,3 +36,11 @@ add_test(NAME case.slotCoater.serialVsParallel
 set_tests_properties(case.slotCoater.serialVsParallel PROPERTIES
     TIMEOUT 30 LABELS "case;slotCoater"
     FIXTURES_REQUIRED "slotCoater_serial;slotCoater_parallel")
+
+add_test(NAME case.slotCoater.rankMatching
+    COMMAND ${slotCoaterDir}/runRankMatchingTest.sh
+            ${slotCoaterWork}/parallel ${slotCoaterWork}/rankMatching)
+set_tests_properties(case.slotCoater.rankMatching PROPERTIES
+    TIMEOUT 300 LABELS "case;slotCoater;throughput" PROCESSORS 2
+    ENVIRONMENT PYTHONDONTWRITEBYTECODE=1
+    FIXTURES_REQUIRED slotCoater_parallel)

@@ -17,6 +17,7 @@
 #include <cmath>
 #include <stdexcept>
 #include <sstream>
+#include <utility>
 
 // * * * * * * * * * * * * * * * Local Functions * * * * * * * * * * * * * //
 
@@ -151,60 +152,30 @@ void Foam::demCoupling::startDEM()
     }
     Info<< endl;
 
-    engine_.reset(new liggghtsEngine(logFile, screenFile));
+    if (restart_.resume())
+    {
+        // Each rank's DEM file is that of the rank it had in LIGGGHTS
+        openDEM(logFile, screenFile, restart_.demRank());
+    }
+    else
+    {
+        openDEM(logFile, screenFile, -1);
+    }
+    if (Pstream::parRun() && !restart_.resume())
+    {
+        const label demRank = matchDEMRanks();
+        if (returnReduce(demRank != Pstream::myProcNo(), orOp<bool>()))
+        {
+            // LIGGGHTS gives its subdomains to its ranks in their order:
+            // open it again with its ranks in the matching order (the
+            // script runs a second time; the log is the second run's)
+            Info<< "Opening LIGGGHTS again with its ranks in that order"
+                << endl;
+            engine_.clear();
+            openDEM(logFile, screenFile, demRank);
+        }
+    }
     liggghtsEngine& dem = engine_();
-
-    // Set before the script: the script may only refine them
-    dem.command(std::string("units ") + demUnits::style);
-    dem.command("atom_modify map array");   // atom ids to local indices
-
-    // Case folder, for files named in the script (LIGGGHTS resolves
-    // relative names from the working directory, which -case does not set)
-    dem.command("variable colloid_case string " + runTime.globalPath());
-
-    const scalar d = props_.particleDiameter()/demUnits::length;
-    dem.command(defineVariable("colloid_diameter", d));
-    dem.command(defineVariable("colloid_radius", 0.5*d));
-    dem.command
-    (
-        defineVariable
-        (
-            "colloid_density",
-            props_.particleDensity()/demUnits::density
-        )
-    );
-    // The fluid of the settings, for the DEM's own liquid models (e.g.
-    // the plugin's lubrication viscosity): one source for rho and mu
-    dem.command
-    (
-        defineVariable
-        (
-            "colloid_fluid_density",
-            props_.rhoFluid()/demUnits::density
-        )
-    );
-    dem.command
-    (
-        defineVariable
-        (
-            "colloid_fluid_viscosity",
-            props_.muFluid()/demUnits::viscosity
-        )
-    );
-    dem.command
-    (
-        defineVariable
-        (
-            "colloid_timestep",
-            props_.demTimeStep()/demUnits::time
-        )
-    );
-
-    // Fresh start or resume (colloid_restart, colloid_restart_file)
-    restart_.defineVariables(dem);
-
-    Info<< "Reading DEM script " << props_.demScript() << endl;
-    dem.file(props_.demScript());
 
     if (dem.unitStyle() != demUnits::style)
     {
@@ -263,7 +234,7 @@ void Foam::demCoupling::startDEM()
         std::ostringstream os;
         os.precision(17);
         os << "compute colloidContacts all contact/atom skin "
-           << touchTolerance_*0.5*d;
+           << touchTolerance_*0.5*props_.particleDiameter()/demUnits::length;
         dem.command(os.str());
     }
 
@@ -326,6 +297,136 @@ void Foam::demCoupling::startDEM()
             mesh_.time().value()
         );
     }
+}
+
+void Foam::demCoupling::openDEM
+(
+    const fileName& logFile,
+    const fileName& screenFile,
+    const label demRank
+)
+{
+    const Time& runTime = mesh_.time();
+
+    engine_.reset(new liggghtsEngine(logFile, screenFile, demRank));
+    liggghtsEngine& dem = engine_();
+
+    // Set before the script: the script may only refine them
+    dem.command(std::string("units ") + demUnits::style);
+    dem.command("atom_modify map array");   // atom ids to local indices
+
+    // Case folder, for files named in the script (LIGGGHTS resolves
+    // relative names from the working directory, which -case does not set)
+    dem.command("variable colloid_case string " + runTime.globalPath());
+
+    // The particles', the fluid's (for the DEM's own liquid models, e.g.
+    // the plugin's lubrication viscosity: one source for rho and mu) and
+    // the DEM step, in the DEM's units
+    const scalar d = props_.particleDiameter()/demUnits::length;
+    const std::pair<const char*, scalar> variables[] =
+    {
+        {"colloid_diameter", d},
+        {"colloid_radius", 0.5*d},
+        {"colloid_density", props_.particleDensity()/demUnits::density},
+        {"colloid_fluid_density", props_.rhoFluid()/demUnits::density},
+        {"colloid_fluid_viscosity", props_.muFluid()/demUnits::viscosity},
+        {"colloid_timestep", props_.demTimeStep()/demUnits::time}
+    };
+    for (const auto& variable : variables)
+    {
+        dem.command(defineVariable(variable.first, variable.second));
+    }
+
+    // Fresh start or resume (colloid_restart, colloid_restart_file)
+    restart_.defineVariables(dem);
+
+    Info<< "Reading DEM script " << props_.demScript() << endl;
+    dem.file(props_.demScript());
+}
+
+
+Foam::label Foam::demCoupling::matchDEMRanks() const
+{
+    const label nProcs = Pstream::nProcs();
+    const label me = Pstream::myProcNo();
+
+    // Every DEM subdomain's box [m] (one per rank: boxes, not particles)
+    double lo[3], hi[3];
+    engine_->subBox(lo, hi);
+    List<boundBox> boxes(nProcs);
+    boxes[me] = boundBox
+    (
+        demUnits::length*point(lo[0], lo[1], lo[2]),
+        demUnits::length*point(hi[0], hi[1], hi[2])
+    );
+    Pstream::gatherList(boxes);
+    Pstream::scatterList(boxes);
+
+    // The volume of this rank's cells (by their centres) in each
+    // subdomain [m^3]
+    List<scalarList> overlap(nProcs);
+    overlap[me].setSize(nProcs, 0);
+    const vectorField& C = mesh_.C();
+    const scalarField& V = mesh_.V();
+    forAll(C, celli)
+    {
+        forAll(boxes, d)
+        {
+            if (boxes[d].contains(C[celli]))
+            {
+                overlap[me][d] += V[celli];
+                break;
+            }
+        }
+    }
+    Pstream::gatherList(overlap);
+    Pstream::scatterList(overlap);
+
+    // Largest overlap first (every rank computes the same answer)
+    labelList demRankOf(nProcs, -1);
+    labelList fluidRankOf(nProcs, -1);
+    for (label n = 0; n < nProcs; ++n)
+    {
+        scalar best = -1;
+        label bestF = -1, bestD = -1;
+        for (label f = 0; f < nProcs; ++f)
+        {
+            for (label d = 0; d < nProcs && demRankOf[f] < 0; ++d)
+            {
+                if (fluidRankOf[d] < 0 && overlap[f][d] > best)
+                {
+                    best = overlap[f][d];
+                    bestF = f;
+                    bestD = d;
+                }
+            }
+        }
+        demRankOf[bestF] = bestD;
+        fluidRankOf[bestD] = bestF;
+    }
+
+    scalar total = 0, same = 0, matched = 0;
+    for (label f = 0; f < nProcs; ++f)
+    {
+        total += sum(overlap[f]);
+        same += overlap[f][f];
+        matched += overlap[f][demRankOf[f]];
+    }
+    total = max(total, VSMALL);
+
+    // LIGGGHTS' own order unless the matching is better
+    const bool reorder = matched > same + 1e-9*total;
+    Info<< "DEM subdomains and fluid parts: " << 100*same/total
+        << " % of the fluid volume in the DEM box is on the rank of its"
+        << " DEM subdomain in LIGGGHTS' order";
+    if (reorder)
+    {
+        Info<< ", " << 100*matched/total << " % with each subdomain on the"
+            << " rank that holds most of its cells";
+    }
+    Info<< endl;
+
+    return reorder ? demRankOf[me] : me;
 }
 
 
@@ -631,6 +732,8 @@ void Foam::demCoupling::gatherRecords
     }
 
     records_.gather(proc_, cell, position, radius, mass, velocity, K, F);
+    nRecordsGathered_ += n;
+    nRecordsAway_ += records_.nSentAway();
 
     if (props_.twoWay())
     {
@@ -751,6 +854,8 @@ Foam::demCoupling::demCoupling
     demSeconds_(0),
     couplingSeconds_(0),
     particleSteps_(0),
+    nRecordsGathered_(0),
+    nRecordsAway_(0),
     insertedSeconds_(0)
 {
     checkTimeStep();
@@ -963,23 +1068,32 @@ Foam::List<Foam::FixedList<Foam::scalar, 7>> Foam::demCoupling::fluidForces
         }
     }
 
-    tmp<vectorField> sampledU, sampledGradp, sampledDivTau;
-    tmp<scalarField> sampledEps;
+    // The fields the forces need, sampled together: one pass over the
+    // kernel points and one exchange
+    scalarField sampledEps;
+    List<vectorField> sampled;
+    label iU = -1, iGradp = -1, iDivTau = -1;
     if (sampler)
     {
-        sampledEps = sampler->sample(voidfraction_());
+        UPtrList<const volVectorField> fields(3);
+        label nFields = 0;
         if (kernelU)
         {
-            sampledU = sampler->sample(UInterp_.field());
+            iU = nFields;
+            fields.set(nFields++, &UInterp_.field());
         }
         if (tgradp.valid())
         {
-            sampledGradp = sampler->sample(tgradp());
+            iGradp = nFields;
+            fields.set(nFields++, &tgradp());
         }
         if (tdivTau.valid())
         {
-            sampledDivTau = sampler->sample(tdivTau());
+            iDivTau = nFields;
+            fields.set(nFields++, &tdivTau());
         }
+        fields.setSize(nFields);
+        sampler->sample(voidfraction_(), fields, sampledEps, sampled);
     }
 
     const scalar mu = props_.muFluid();
@@ -996,17 +1110,17 @@ Foam::List<Foam::FixedList<Foam::scalar, 7>> Foam::demCoupling::fluidForces
             restContext(rec.radius[k], rec.mass[k], rec.velocity[k]);
         c.cell = celli;
         c.U =
-            sampledU.valid() ? sampledU()[k]
+            iU >= 0 ? sampled[iU][k]
           : kernelU ? vector::zero
           : UInterp_.interpolate(rec.position[k], celli);
         c.gradp =
-            sampledGradp.valid() ? sampledGradp()[k]
+            iGradp >= 0 ? sampled[iGradp][k]
           : tgradp.valid() ? tgradp()[celli] : vector::zero;
         c.divTau =
-            sampledDivTau.valid() ? sampledDivTau()[k]
+            iDivTau >= 0 ? sampled[iDivTau][k]
           : tdivTau.valid() ? tdivTau()[celli] : vector::zero;
         c.eps =
-            sampledEps.valid() ? sampledEps()[k]
+            sampler ? sampledEps[k]
           : voidfraction_.valid() ? voidfraction_()[celli] : 1.0;
 
         scalar K = drag_->K(c);
@@ -1457,6 +1571,17 @@ void Foam::demCoupling::write
                 << " s, coupling " << couplingSeconds_ << " s; "
                 << particleSteps_/total/Pstream::nProcs()
                 << " particle-steps per second per rank" << endl;
+        }
+        if (Pstream::parRun())
+        {
+            // (collective: every rank writes)
+            const scalar gathered =
+                returnReduce(nRecordsGathered_, sumOp<scalar>());
+            const scalar away = returnReduce(nRecordsAway_, sumOp<scalar>());
+            Info<< "Records: " << 100*away/max(gathered, scalar(1))
+                << " % of the particles were on another rank than their"
+                << " cells (mean over the coupling steps): the coupling's"
+                << " traffic is for them" << endl;
         }
         if (nAnalyses_ > 0)
         {

@@ -62,7 +62,8 @@ Foam::demRestart::demRestart(const fvMesh& mesh)
     resume_(false),
     demStep_(0),
     nInserted_(0),
-    demTimeStepSize_(0)
+    demTimeStepSize_(0),
+    demRank_(Pstream::myProcNo())
 {
     const Time& runTime = mesh.time();
 
@@ -100,14 +101,33 @@ Foam::demRestart::demRestart(const fvMesh& mesh)
         }
 
         const fileName files(pattern(runTime.timePath()/"DEM"));
+
+        // This rank's rank in LIGGGHTS in the written run: the number of
+        // its own restart file (LIGGGHTS' ranks may be in another order
+        // than the fluid's, demCoupling::matchDEMRanks).  (Not in the
+        // marker: a dictionary in uniform/ is read on the master only.)
+        for (const fileName& f : readDir(files.path(), fileName::FILE))
+        {
+            const word name(f.name());
+            label n = -1;
+            if
+            (
+                name.size() > 8 && name.substr(0, 8) == "restart."
+             && Foam::read(name.substr(8), n)
+            )
+            {
+                demRank_ = n;
+            }
+        }
+
         fileName missing;
-        if (Pstream::master() && !isFile(files.path()/"restart.base"))
+        if (demRank_ == 0 && !isFile(files.path()/"restart.base"))
         {
             missing = files.path()/"restart.base";
         }
         const fileName own
         (
-            files.path()/("restart." + Foam::name(Pstream::myProcNo()))
+            files.path()/("restart." + Foam::name(demRank_))
         );
         if (!isFile(own))
         {

@@ -15,6 +15,7 @@
 #include <liggghts/modify.h>
 #include <liggghts/force.h>
 #include <liggghts/domain.h>
+#include <liggghts/comm.h>
 #include <liggghts/fix.h>
 #include <liggghts/compute.h>
 #include "liggghtsColloid/register_colloid_models.h"
@@ -130,10 +131,12 @@ LAMMPS_NS::Fix* findFix(void* p, const std::string& id)
 Foam::liggghtsEngine::liggghtsEngine
 (
     const std::string& logFile,
-    const std::string& screenFile
+    const std::string& screenFile,
+    const int demRank
 )
 :
     lmp_(nullptr),
+    world_(nullptr),
     ownsMPI_(false),
     setUpWithParticles_(false),
     setUpNext_(false),
@@ -166,12 +169,28 @@ Foam::liggghtsEngine::liggghtsEngine
 
     logFileName = logFile;
     MPI_Comm_rank(MPI_COMM_WORLD, &worldRank);
-    std::atexit(reportLiggghtsExit);
+    static bool exitReported = false;
+    if (!exitReported)
+    {
+        std::atexit(reportLiggghtsExit);
+        exitReported = true;
+    }
+
+    MPI_Comm* world = new MPI_Comm;
+    if (demRank >= 0)
+    {
+        MPI_Comm_split(MPI_COMM_WORLD, 0, demRank, world);
+    }
+    else
+    {
+        MPI_Comm_dup(MPI_COMM_WORLD, world);
+    }
+    world_ = world;
 
     liggghtsCall call;
     lmp_ = new LAMMPS_NS::LAMMPS
     (
-        static_cast<int>(argv.size()), argv.data(), MPI_COMM_WORLD
+        static_cast<int>(argv.size()), argv.data(), *world
     );
 
     // An error on one rank ends with MPI_Abort, which flushes nothing
@@ -189,14 +208,17 @@ Foam::liggghtsEngine::~liggghtsEngine()
 {
     colloidDragCallback(lmp_, nullptr, nullptr);
     delete engine(lmp_);
-    if (ownsMPI_)
+    int finished = 0;
+    MPI_Finalized(&finished);
+    MPI_Comm* world = static_cast<MPI_Comm*>(world_);
+    if (!finished)
     {
-        int finished = 0;
-        MPI_Finalized(&finished);
-        if (!finished)
-        {
-            MPI_Finalize();
-        }
+        MPI_Comm_free(world);
+    }
+    delete world;
+    if (ownsMPI_ && !finished)
+    {
+        MPI_Finalize();
     }
 }
 
@@ -233,8 +255,9 @@ std::string Foam::liggghtsEngine::writeRestart(const std::string& pattern)
         return name.replace(percent, 1, part);
     };
 
-    // This rank's atoms: an int n, then n doubles (write_restart.cpp)
-    const std::string own = named(std::to_string(worldRank));
+    // This rank's atoms: an int n, then n doubles (write_restart.cpp), in
+    // the file of its rank in LIGGGHTS' communicator
+    const std::string own = named(std::to_string(rank()));
     std::ifstream is(own, std::ios::binary | std::ios::ate);
     const long long size = is ? static_cast<long long>(is.tellg()) : -1;
     int n = -1;
@@ -254,7 +277,7 @@ std::string Foam::liggghtsEngine::writeRestart(const std::string& pattern)
           + (n < 0 ? std::string() : " of " + std::to_string(expected))
           + ")";
     }
-    if (worldRank == 0)
+    if (rank() == 0)
     {
         std::ifstream base(named("base"), std::ios::binary | std::ios::ate);
         if (!base || base.tellg() <= 0)
@@ -436,6 +459,12 @@ void Foam::liggghtsEngine::subBox(double lo[3], double hi[3]) const
         lo[k] = domain->sublo[k];
         hi[k] = domain->subhi[k];
     }
+}
+
+
+int Foam::liggghtsEngine::rank() const
+{
+    return engine(lmp_)->comm->me;
 }
 
 

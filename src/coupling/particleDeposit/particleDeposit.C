@@ -4,6 +4,7 @@
 #include "cyclicPolyPatch.H"
 #include "PstreamBuffers.H"
 #include "mathematicalConstants.H"
+#include "UPtrList.H"
 
 Foam::particleDeposit::particleDeposit
 (
@@ -338,6 +339,99 @@ void Foam::particleDeposit::deposit
             for (const depositShare& t : List<depositShare>(is))
             {
                 add(t, t.originCell, solidVolume, dragCoeff, dragForce);
+            }
+        }
+    }
+}
+
+
+void Foam::particleDeposit::sample
+(
+    const volScalarField& s,
+    const UPtrList<const volVectorField>& v,
+    scalarField& sAtRecords,
+    List<vectorField>& vAtRecords
+) const
+{
+    const label nv = v.size();
+    sAtRecords.setSize(nRecords_);
+    sAtRecords = 0;
+    vAtRecords.setSize(nv);
+    for (vectorField& f : vAtRecords)
+    {
+        f.setSize(nRecords_);
+        f = Zero;
+    }
+
+    const label me = Pstream::myProcNo();
+    const label nProcs = Pstream::nProcs();
+
+    // Points of other ranks' particles: their weighted values go back,
+    // per point the scalar and then each vector's components
+    const label width = 1 + 3*nv;
+    List<DynamicList<label>> backIndex(nProcs);
+    List<DynamicList<scalar>> backValue(nProcs);
+
+    forAll(sampleCell_, j)
+    {
+        const label celli = sampleCell_[j];
+        const scalar w = sampleWeight_[j];
+        if (sampleProc_[j] == me)
+        {
+            const label i = sampleIndex_[j];
+            sAtRecords[i] += w*s[celli];
+            for (label k = 0; k < nv; ++k)
+            {
+                vAtRecords[k][i] += w*v[k][celli];
+            }
+        }
+        else
+        {
+            const label proci = sampleProc_[j];
+            backIndex[proci].append(sampleIndex_[j]);
+            backValue[proci].append(w*s[celli]);
+            for (label k = 0; k < nv; ++k)
+            {
+                const vector value = w*v[k][celli];
+                backValue[proci].append(value.x());
+                backValue[proci].append(value.y());
+                backValue[proci].append(value.z());
+            }
+        }
+    }
+
+    if (!Pstream::parRun())
+    {
+        return;
+    }
+
+    PstreamBuffers buffers(Pstream::commsTypes::nonBlocking);
+    for (label proci = 0; proci < nProcs; ++proci)
+    {
+        if (backIndex[proci].size())
+        {
+            UOPstream os(proci, buffers);
+            os << backIndex[proci] << backValue[proci];
+        }
+    }
+    labelList sizes;
+    buffers.finishedSends(sizes);
+    for (label proci = 0; proci < nProcs; ++proci)
+    {
+        if (sizes[proci])
+        {
+            UIPstream is(proci, buffers);
+            const labelList idx(is);
+            const scalarList values(is);
+            forAll(idx, m)
+            {
+                const scalar* value = &values[m*width];
+                sAtRecords[idx[m]] += value[0];
+                for (label k = 0; k < nv; ++k)
+                {
+                    vAtRecords[k][idx[m]] +=
+                        vector(value[1 + 3*k], value[2 + 3*k], value[3 + 3*k]);
+                }
             }
         }
     }

@@ -26,8 +26,13 @@ void Foam::particleRecords::gather
         }
     }
     sentIndex_.setSize(nProcs);
+    nSentAway_ = 0;
     forAll(toProc, proci)
     {
+        if (proci != Pstream::myProcNo())
+        {
+            nSentAway_ += toProc[proci].size();
+        }
         sentIndex_[proci].transfer(toProc[proci]);
     }
     nFrom_.setSize(nProcs);
