@@ -19,11 +19,17 @@ Projection (stated with the figures it prints):
            the true figure depends on where the cuts fall).
   coupling the bytes per coupling step are per particle whose DEM rank is
            not the fluid rank that owns its cell (located there, its
-           record sent and answered).  METIS and LIGGGHTS' grid are not
-           aligned, so at P ranks about 1 - 1/P of the particles are on
-           another rank (the measured share is printed: the solver's
-           Records line); the bytes per such particle are taken from the
-           largest rank count measured.
+           record sent and answered): the bytes per such particle from
+           the largest rank count measured, times the share of such
+           particles (the solver's Records line).  With the DEM's ranks
+           matched to METIS' parts (demCoupling::matchDEMRanks) that share
+           comes from where the two decompositions' boundaries differ:
+           estimated as the largest rank count's share times the ratio of
+           the DEM grids' cut areas, at most 1 - 1/P (every particle but
+           a rank's own share: the upper bound, as if the two were
+           unrelated).  (The share is the run's mean since its start and
+           N the particles after the first coupling step; the feed adds
+           about 1 % over these runs.)
 """
 import glob
 import re
@@ -145,11 +151,17 @@ gridP = lammpsGrid(L0, project)
 demP = perArea*cutArea(L0, gridP)
 pmax = max(par)
 perParticle = rows[pmax][4]
-couplingP = perParticle*N*(1 - 1.0/project)
+awayMax = awayShare(pmax)
+_, _, Lmax, gridMax, _ = rows[pmax]
+awayP = min(1 - 1.0/project, awayMax*cutArea(L0, gridP)/cutArea(Lmax, gridMax))
+couplingP = perParticle*N*awayP
+couplingUpper = perParticle*N*(1 - 1.0/project)
 print('  DEM, %d ranks (%s): %.3g B per DEM step, all ranks; %.3g per rank'
       % (project, 'x'.join(map(str, gridP)), demP, demP/project))
-print('  coupling, %d ranks: %.3g B per coupling step, all ranks; %.3g per rank'
-      ' (%.0f B per particle on another rank, from %d ranks; 1 - 1/%d of them there)'
-      % (project, couplingP, couplingP/project, perParticle, pmax, project))
-print('  per DEM step (coupling every %d): DEM %.3g B, coupling %.3g B per rank'
+print('  coupling, %d ranks: %.0f %% of the particles on another rank (%.1f %% at %d ranks x the'
+      ' cut areas\' ratio, at most 1 - 1/%d): %.3g B per coupling step, all ranks, %.3g per rank;'
+      ' upper bound %.3g per rank (%.0f B per such particle, from %d ranks)'
+      % (project, 100*awayP, 100*awayMax, pmax, project, couplingP, couplingP/project,
+         couplingUpper/project, perParticle, pmax))
+print('  per DEM step (coupling every %d DEM steps), per rank: DEM %.3g B, coupling %.3g B'
       % (interval, demP/project, couplingP/project/interval))

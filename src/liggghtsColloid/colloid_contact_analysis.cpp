@@ -256,7 +256,7 @@ ColloidContactAnalysis::Result ColloidContactAnalysis::analyse(double t, const i
     std::vector<long> byContacts(mostAll + 1, 0);
     for (int c : contacts_) byContacts[c]++;
     result.byContacts.assign(mostAll + 1, 0);
-    MPI_Reduce(byContacts.data(), result.byContacts.data(), mostAll + 1, MPI_LONG, MPI_SUM, 0, world);
+    MPI_Reduce(byContacts.data(), result.byContacts.data(), mostAll + 1, MPI_LONG, MPI_SUM, masterRank(world), world);
 
     findAgglomerates(result);
     return result;

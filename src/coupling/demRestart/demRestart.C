@@ -4,6 +4,7 @@
 #include "IFstream.H"
 #include "OSspecific.H"
 #include "Time.H"
+#include "ListOps.H"
 #include "demUnits.H"
 
 #include <cerrno>
@@ -106,6 +107,7 @@ Foam::demRestart::demRestart(const fvMesh& mesh)
         // its own restart file (LIGGGHTS' ranks may be in another order
         // than the fluid's, demCoupling::matchDEMRanks).  (Not in the
         // marker: a dictionary in uniform/ is read on the master only.)
+        label nNumbered = 0;
         for (const fileName& f : readDir(files.path(), fileName::FILE))
         {
             const word name(f.name());
@@ -117,7 +119,31 @@ Foam::demRestart::demRestart(const fvMesh& mesh)
             )
             {
                 demRank_ = n;
+                ++nNumbered;
             }
+        }
+        // One file per rank, the numbers 0 ... nProcs - 1 (a rank without
+        // one, -1, is named by the check of the files below)
+        labelList demRanks(Pstream::nProcs(), -1);
+        demRanks[Pstream::myProcNo()] =
+            (nNumbered == 0) ? -1 : (nNumbered == 1) ? demRank_ : -2;
+        Pstream::gatherList(demRanks);
+        Pstream::scatterList(demRanks);
+        labelList sorted(demRanks);
+        Foam::sort(sorted);
+        if (!demRanks.found(-1) && sorted != identity(Pstream::nProcs()))
+        {
+            FatalErrorInFunction
+                << "Cannot resume from time " << runTime.timeName()
+                << ": each rank's DEM folder must hold one numbered restart"
+                << " file, their numbers 0 to " << Pstream::nProcs() - 1
+                << " (restart.<n>, n: the rank's rank in LIGGGHTS); found"
+                << " per rank (-2: more than one) " << demRanks
+                << exit(FatalError);
+        }
+        if (nNumbered != 1)
+        {
+            demRank_ = Pstream::myProcNo();
         }
 
         fileName missing;

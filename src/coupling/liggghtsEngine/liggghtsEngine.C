@@ -38,7 +38,8 @@ namespace
 // its log on stderr.
 std::string logFileName;
 bool insideLiggghts = false;
-int worldRank = 0;      // only rank 0 writes the log and reports
+int worldRank = 0;      // MPI_COMM_WORLD's rank 0 reports (the log is written
+                        // by LIGGGHTS' rank 0, the same file)
 
 void reportLiggghtsExit()
 {

@@ -17,8 +17,9 @@
 #     not uniform over the fluid); and it is within 3 points of 100 % less
 #     the matched volume share the log gives;
 #   - the contact analysis, gathered on the solver's master although that
-#     is no longer LIGGGHTS' rank 0, counts every particle present (last
-#     row of contacts.csv = the log's present count);
+#     is no longer LIGGGHTS' rank 0, counts every particle present, in all
+#     and by their numbers of contacts (last row of contacts.csv: particles
+#     and with0 + with1 + with2 + with3orMore = the log's present count);
 #   - the run resumed from its write at 0.6 us (each rank's DEM restart
 #     file is that of its rank in LIGGGHTS, now not its own rank) ends at
 #     1.2 us with the particles of the uninterrupted run (compareClouds.py).
@@ -82,11 +83,18 @@ if abs(away - (100 - matched)) > 3:
     sys.exit('FAIL: %.2f %% of the particles on another rank, %.2f %% of the volume: more than'
              ' 3 points apart' % (away, 100 - matched))
 present = int(re.findall(r'Particles: present (\d+)', log)[-1])
-rows = [l for l in open(sys.argv[2]) if l[:1].isdigit()]
-counted = int(rows[-1].split(',')[1])
-print('contact analysis: %d particles; present: %d' % (counted, present))
+lines = open(sys.argv[2]).read().splitlines()
+header = [l for l in lines if l.startswith('time,')][0].split(',')
+rows = [dict(zip(header, l.split(','))) for l in lines if l[:1].isdigit()]
+counted = int(rows[-1]['particles'])
+byContacts = sum(int(rows[-1][k]) for k in ('with0', 'with1', 'with2', 'with3orMore'))
+print('contact analysis: %d particles, %d by their contacts; present: %d'
+      % (counted, byContacts, present))
 if counted != present:
     sys.exit('FAIL: the contact analysis counted %d particles, %d present' % (counted, present))
+if byContacts != present:
+    sys.exit('FAIL: the contact analysis counted %d particles by their contacts, %d present'
+             % (byContacts, present))
 PY
 
 # Resumed from the write at 0.6 us: the same particles at 1.2 us
