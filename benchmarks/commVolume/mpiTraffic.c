@@ -63,6 +63,19 @@ static long long bytesOf(int count, MPI_Datatype type)
     return (long long)count*size;
 }
 
+/* Bytes of a list of counts (the v-variants of collectives) */
+static long long bytesOfCounts(const int* counts, MPI_Comm comm, MPI_Datatype type)
+{
+    int size;
+    PMPI_Comm_size(comm, &size);
+    long long bytes = 0;
+    for (int i = 0; i < size; ++i)
+    {
+        bytes += bytesOf(counts[i], type);
+    }
+    return bytes;
+}
+
 static void p2p(MPI_Comm comm, int count, MPI_Datatype type)
 {
     commCount* c = countOf(comm);
@@ -162,32 +175,16 @@ int MPI_Scatter(const void* sb, int sn, MPI_Datatype st, void* rb, int rn,
 int MPI_Scatterv(const void* sb, const int* sn, const int* displs, MPI_Datatype st,
                  void* rb, int rn, MPI_Datatype rt, int root, MPI_Comm c)
 {
-    int rank, size;
+    int rank;
     PMPI_Comm_rank(c, &rank);
-    PMPI_Comm_size(c, &size);
-    long long bytes = 0;
-    if (rank == root)
-    {
-        for (int i = 0; i < size; ++i)
-        {
-            bytes += bytesOf(sn[i], st);
-        }
-    }
-    coll(c, bytes);
+    coll(c, rank == root ? bytesOfCounts(sn, c, st) : 0);
     return PMPI_Scatterv(sb, sn, displs, st, rb, rn, rt, root, c);
 }
 
 int MPI_Reduce_scatter(const void* sb, void* rb, const int* rn, MPI_Datatype t,
                        MPI_Op op, MPI_Comm c)
 {
-    int size;
-    PMPI_Comm_size(c, &size);
-    long long bytes = 0;
-    for (int i = 0; i < size; ++i)
-    {
-        bytes += bytesOf(rn[i], t);
-    }
-    coll(c, bytes);
+    coll(c, bytesOfCounts(rn, c, t));
     return PMPI_Reduce_scatter(sb, rb, rn, t, op, c);
 }
 
@@ -203,14 +200,7 @@ int MPI_Alltoall(const void* sb, int sn, MPI_Datatype st, void* rb, int rn,
 int MPI_Alltoallv(const void* sb, const int* sn, const int* sdispls, MPI_Datatype st,
                   void* rb, const int* rn, const int* rdispls, MPI_Datatype rt, MPI_Comm c)
 {
-    int size;
-    PMPI_Comm_size(c, &size);
-    long long bytes = 0;
-    for (int i = 0; i < size; ++i)
-    {
-        bytes += bytesOf(sn[i], st);
-    }
-    coll(c, bytes);
+    coll(c, bytesOfCounts(sn, c, st));
     return PMPI_Alltoallv(sb, sn, sdispls, st, rb, rn, rdispls, rt, c);
 }
 
