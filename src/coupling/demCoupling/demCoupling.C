@@ -152,15 +152,9 @@ void Foam::demCoupling::startDEM()
     }
     Info<< endl;
 
-    if (restart_.resume())
-    {
-        // Each rank's DEM file is that of the rank it had in LIGGGHTS
-        openDEM(logFile, screenFile, restart_.demRank());
-    }
-    else
-    {
-        openDEM(logFile, screenFile, -1);
-    }
+    // Resuming, each rank's DEM file is that of the rank it had in
+    // LIGGGHTS; a fresh start takes LIGGGHTS' order, then maybe another
+    openDEM(logFile, screenFile, restart_.resume() ? restart_.demRank() : -1);
     if (Pstream::parRun() && !restart_.resume())
     {
         const label demRank = matchDEMRanks();
@@ -298,6 +292,7 @@ void Foam::demCoupling::startDEM()
         );
     }
 }
+
 
 void Foam::demCoupling::openDEM
 (
