@@ -15,7 +15,18 @@
 #   polyhedral meshes of 2.5-diameter cells: eps in [epsilonMin, 1], solid
 #   volume = particles' volume to 1e-12; on 2 ranks (METIS) the field
 #   equals the serial one (hex, tet: to 1e-10; polyhedral: at most 1e-3 of
-#   the solid volume in other cells).
+#   the solid volume in other cells); the kernel's sampling is the
+#   transpose of its deposit (its debug check: sum of particle volume x
+#   sampled eps against sum of deposited solid x cell eps, to 1e-12).
+# twoWay.momentum.<A|B>: 200 spheres settling in a fully periodic box of
+#   water (no walls): the fluid receives minus the particles' drag at every
+#   step to 1e-10, and the momentum of fluid plus particles follows the
+#   particles' weight less buoyancy to within |W| x one DEM step (the
+#   velocity-Verlet half kick).
+# twoWay.suspension[.parallel]: the settlingSuspension tutorial (4584
+#   spheres, 10 % solids, closed column) at test size, 20 coupling steps:
+#   the particles settle, none is lost, and 2 ranks (METIS) give the mean
+#   settling velocity of the serial run within 0.1 %.
 
 set(twoWayDir ${CMAKE_CURRENT_SOURCE_DIR}/twoWay)
 set(twoWayWork ${CMAKE_CURRENT_BINARY_DIR}/twoWay)
@@ -25,51 +36,89 @@ add_test(NAME case.twoWay.pack
 set_tests_properties(case.twoWay.pack PROPERTIES
     TIMEOUT 300 LABELS "case;twoWay" FIXTURES_SETUP twoWayPack)
 
-foreach(model A B)
-    foreach(Us 1e-4 1e-3 1e-2 3e-2 1e-1)
-        set(name case.twoWay.ergun.${model}.Us${Us})
+# Each of these runs with both deposit kernels: the satellite kernel
+# (twoWay/kernel satellite, the default: test names as they are) and the
+# cell-point kernel (names ending .cellPoint; KERNEL=cellPoint makes the
+# scripts set twoWay/kernel cellPoint).  With the cell-point kernel the
+# Ergun section ends one cell lower (bedPressureDrop.py: the kernel reaches
+# one cell beyond a particle's, and the bed's surface is in the cell above
+# the section).
+foreach(kernel satellite cellPoint)
+    if(kernel STREQUAL satellite)
+        set(k "")
+    else()
+        set(k ".${kernel}")
+    endif()
+    set(kernelEnv "PYTHONDONTWRITEBYTECODE=1;KERNEL=${kernel}")
+
+    foreach(model A B)
+        foreach(Us 1e-4 1e-3 1e-2 3e-2 1e-1)
+            set(name case.twoWay.ergun.${model}.Us${Us}${k})
+            add_test(NAME ${name}
+                COMMAND ${twoWayDir}/runPackedBedTest.sh ${model} ${Us}
+                        ${twoWayWork}/pack ${twoWayWork}/ergun_${model}_${Us}${k})
+            set_tests_properties(${name} PROPERTIES
+                TIMEOUT 120 LABELS "case;twoWay" FIXTURES_REQUIRED twoWayPack
+                ENVIRONMENT "${kernelEnv}")
+        endforeach()
+    endforeach()
+    set_tests_properties(case.twoWay.ergun.A.Us1e-2${k} PROPERTIES
+        FIXTURES_SETUP twoWayErgunSerial${k})
+
+    add_test(NAME case.twoWay.ergun.parallel${k}
+        COMMAND ${twoWayDir}/runPackedBedTest.sh A 1e-2 ${twoWayWork}/pack
+                ${twoWayWork}/ergun_A_1e-2_parallel${k} 2
+                ${twoWayWork}/ergun_A_1e-2${k})
+    set_tests_properties(case.twoWay.ergun.parallel${k} PROPERTIES
+        TIMEOUT 180 LABELS "case;twoWay" PROCESSORS 2
+        FIXTURES_REQUIRED "twoWayPack;twoWayErgunSerial${k}"
+        ENVIRONMENT "${kernelEnv}")
+
+    foreach(mesh hex tet polyDual)
+        set(name case.twoWay.fluidFraction.${mesh}${k})
         add_test(NAME ${name}
-            COMMAND ${twoWayDir}/runPackedBedTest.sh ${model} ${Us}
-                    ${twoWayWork}/pack ${twoWayWork}/ergun_${model}_${Us})
+            COMMAND ${twoWayDir}/runFluidFractionTest.sh ${mesh}
+                    ${twoWayWork}/pack ${twoWayWork}/fraction_${mesh}${k})
         set_tests_properties(${name} PROPERTIES
             TIMEOUT 120 LABELS "case;twoWay" FIXTURES_REQUIRED twoWayPack
-            ENVIRONMENT PYTHONDONTWRITEBYTECODE=1)
+            FIXTURES_SETUP twoWayFraction_${mesh}${k}
+            ENVIRONMENT "${kernelEnv}")
+
+        if(mesh STREQUAL polyDual)
+            set(moved 1e-3)
+        else()
+            set(moved "")
+        endif()
+        add_test(NAME ${name}.parallel
+            COMMAND ${twoWayDir}/runFluidFractionTest.sh ${mesh}
+                    ${twoWayWork}/pack ${twoWayWork}/fraction_${mesh}_parallel${k} 2
+                    ${twoWayWork}/fraction_${mesh}${k} ${moved})
+        set_tests_properties(${name}.parallel PROPERTIES
+            TIMEOUT 180 LABELS "case;twoWay" PROCESSORS 2
+            FIXTURES_REQUIRED "twoWayPack;twoWayFraction_${mesh}${k}"
+            ENVIRONMENT "${kernelEnv}")
     endforeach()
-endforeach()
-set_tests_properties(case.twoWay.ergun.A.Us1e-2 PROPERTIES
-    FIXTURES_SETUP twoWayErgunSerial)
 
-add_test(NAME case.twoWay.ergun.parallel
-    COMMAND ${twoWayDir}/runPackedBedTest.sh A 1e-2 ${twoWayWork}/pack
-            ${twoWayWork}/ergun_A_1e-2_parallel 2 ${twoWayWork}/ergun_A_1e-2)
-set_tests_properties(case.twoWay.ergun.parallel PROPERTIES
-    TIMEOUT 180 LABELS "case;twoWay" PROCESSORS 2
-    FIXTURES_REQUIRED "twoWayPack;twoWayErgunSerial"
-    ENVIRONMENT PYTHONDONTWRITEBYTECODE=1)
+    foreach(model A B)
+        add_test(NAME case.twoWay.momentum.${model}${k}
+            COMMAND ${twoWayDir}/runMomentumTest.sh ${model}
+                    ${twoWayWork}/momentum_${model}${k})
+        set_tests_properties(case.twoWay.momentum.${model}${k} PROPERTIES
+            TIMEOUT 120 LABELS "case;twoWay" ENVIRONMENT "${kernelEnv}")
+    endforeach()
 
-foreach(mesh hex tet polyDual)
-    set(name case.twoWay.fluidFraction.${mesh})
-    add_test(NAME ${name}
-        COMMAND ${twoWayDir}/runFluidFractionTest.sh ${mesh}
-                ${twoWayWork}/pack ${twoWayWork}/fraction_${mesh})
-    set_tests_properties(${name} PROPERTIES
-        TIMEOUT 120 LABELS "case;twoWay" FIXTURES_REQUIRED twoWayPack
-        FIXTURES_SETUP twoWayFraction_${mesh}
-        ENVIRONMENT PYTHONDONTWRITEBYTECODE=1)
+    add_test(NAME case.twoWay.suspension${k}
+        COMMAND ${twoWayDir}/runSuspensionTest.sh ${twoWayWork}/suspension${k})
+    set_tests_properties(case.twoWay.suspension${k} PROPERTIES
+        TIMEOUT 180 LABELS "case;twoWay" FIXTURES_SETUP twoWaySuspension${k}
+        ENVIRONMENT "${kernelEnv}")
 
-    if(mesh STREQUAL polyDual)
-        set(moved 1e-3)
-    else()
-        set(moved "")
-    endif()
-    add_test(NAME ${name}.parallel
-        COMMAND ${twoWayDir}/runFluidFractionTest.sh ${mesh}
-                ${twoWayWork}/pack ${twoWayWork}/fraction_${mesh}_parallel 2
-                ${twoWayWork}/fraction_${mesh} ${moved})
-    set_tests_properties(${name}.parallel PROPERTIES
+    add_test(NAME case.twoWay.suspension.parallel${k}
+        COMMAND ${twoWayDir}/runSuspensionTest.sh ${twoWayWork}/suspension_parallel${k}
+                2 ${twoWayWork}/suspension${k})
+    set_tests_properties(case.twoWay.suspension.parallel${k} PROPERTIES
         TIMEOUT 180 LABELS "case;twoWay" PROCESSORS 2
-        FIXTURES_REQUIRED "twoWayPack;twoWayFraction_${mesh}"
-        ENVIRONMENT PYTHONDONTWRITEBYTECODE=1)
+        FIXTURES_REQUIRED twoWaySuspension${k} ENVIRONMENT "${kernelEnv}")
 endforeach()
 
 # twoWay.badInput.*: bad two-way settings stop the solver before anything
@@ -103,34 +152,6 @@ add_test(NAME case.twoWay.settling.parallel
 set_tests_properties(case.twoWay.settling.parallel PROPERTIES
     TIMEOUT 180 LABELS "case;twoWay" PROCESSORS 2
     FIXTURES_REQUIRED twoWaySettling)
-
-# twoWay.momentum.<A|B>: 200 spheres settling in a fully periodic box of
-#   water (no walls): the fluid receives minus the particles' drag at every
-#   step to 1e-10, and the momentum of fluid plus particles follows the
-#   particles' weight less buoyancy to within |W| x one DEM step (the
-#   velocity-Verlet half kick).
-foreach(model A B)
-    add_test(NAME case.twoWay.momentum.${model}
-        COMMAND ${twoWayDir}/runMomentumTest.sh ${model} ${twoWayWork}/momentum_${model})
-    set_tests_properties(case.twoWay.momentum.${model} PROPERTIES
-        TIMEOUT 120 LABELS "case;twoWay")
-endforeach()
-
-# twoWay.suspension[.parallel]: the settlingSuspension tutorial (4584
-#   spheres, 10 % solids, closed column) at test size, 20 coupling steps:
-#   the particles settle, none is lost, and 2 ranks (METIS) give the mean
-#   settling velocity of the serial run within 0.1 %.
-add_test(NAME case.twoWay.suspension
-    COMMAND ${twoWayDir}/runSuspensionTest.sh ${twoWayWork}/suspension)
-set_tests_properties(case.twoWay.suspension PROPERTIES
-    TIMEOUT 180 LABELS "case;twoWay" FIXTURES_SETUP twoWaySuspension)
-
-add_test(NAME case.twoWay.suspension.parallel
-    COMMAND ${twoWayDir}/runSuspensionTest.sh ${twoWayWork}/suspension_parallel
-            2 ${twoWayWork}/suspension)
-set_tests_properties(case.twoWay.suspension.parallel PROPERTIES
-    TIMEOUT 180 LABELS "case;twoWay" PROCESSORS 2
-    FIXTURES_REQUIRED twoWaySuspension)
 
 # twoWay.viscousStress: the viscousStress force model (Model A's V div(tau))
 #   on a neutrally buoyant sphere of d = H/5 in the one-way plane Poiseuille

@@ -70,6 +70,7 @@ Foam::couplingProperties::couplingProperties(const objectRegistry& obr)
     twoWay_(false),
     modelB_(false),
     epsilonMin_(1),
+    kernel_("satellite"),
     kernelRadius_(0),
     selfInducedVelocity_(false),
     clipFluidFraction_(false),
@@ -133,6 +134,16 @@ Foam::couplingProperties::couplingProperties(const objectRegistry& obr)
                 << exit(FatalIOError);
         }
 
+        kernel_ = tw.getOrDefault<word>("kernel", "satellite");
+        if (kernel_ != "satellite" && tw.found("kernelRadius"))
+        {
+            FatalIOErrorInFunction(tw)
+                << "Keyword 'kernelRadius' in " << tw.name() << " is for"
+                << " the satellite kernel, but 'kernel' is '" << kernel_
+                << "', whose support is set by the mesh: remove"
+                << " kernelRadius, or set kernel satellite"
+                << exit(FatalIOError);
+        }
         kernelRadius_ = tw.getOrDefault<scalar>("kernelRadius", 0);
         if (kernelRadius_ < 0)
         {
@@ -290,7 +301,7 @@ Foam::couplingProperties::couplingProperties(const objectRegistry& obr)
         keywordCheck
         (
             dict.subDict("twoWay"),
-            {"modelType", "epsilonMin", "kernelRadius",
+            {"modelType", "epsilonMin", "kernel", "kernelRadius",
              "selfInducedVelocity", "clipFluidFraction"},
             true
         );

@@ -743,10 +743,10 @@ void Foam::demCoupling::depositRecords()
     scalarField Kc(mesh_.nCells(), 0);
     vectorField Fc(mesh_.nCells(), Zero);
 
-    deposit_.deposit
+    deposit_->deposit
     (
         records_.position, records_.cell, records_.radius,
-        props_.kernelRadius(), records_.dragCoeff, records_.dragForce,
+        records_.dragCoeff, records_.dragForce,
         solidVolume, Kc, Fc
     );
 
@@ -800,7 +800,8 @@ void Foam::demCoupling::depositRecords()
             << " the fluid fraction would be clipped and the fluid would no"
             << " longer hold the particles' volume.  Lower epsilonMin (in"
             << " (0, 1)), spread the particles over more of the mesh"
-            << " (twoWay/kernelRadius [m]), or set twoWay/clipFluidFraction"
+            << " (twoWay/kernel satellite with a larger twoWay/kernelRadius"
+            << " [m]), or set twoWay/clipFluidFraction"
             << " yes to clip and go on" << exit(FatalError);
     }
     if (nClippedAll)
@@ -835,7 +836,7 @@ Foam::demCoupling::demCoupling
     exchange_(U.mesh(), locator_),
     UInterp_(U),
     records_(),
-    deposit_(U.mesh(), locator_),
+    deposit_(),
     proc_(),
     engine_(),
     restart_(U.mesh()),
@@ -863,6 +864,7 @@ Foam::demCoupling::demCoupling
         Info<< "Two-way coupling, Model " << (props_.modelB() ? "B" : "A")
             << ", fluid fraction bounded below by "
             << props_.epsilonMin() << endl;
+        deposit_ = depositKernel::New(props_, mesh_, locator_, UInterp_);
 
         voidfraction_.reset
         (
@@ -1036,15 +1038,16 @@ Foam::vector Foam::demCoupling::explicitForce
 Foam::List<Foam::FixedList<Foam::scalar, 7>> Foam::demCoupling::fluidForces
 (
     const particleRecords& rec,
-    const particleDeposit* sampler,
+    const depositKernel* sampler,
     scalar& tauMin
 )
 {
     // Two-way: eps and grad p averaged over each particle's kernel (the
     // transpose of its deposit: the pressure-gradient forces then balance
-    // the fluid's eps grad p exactly), and so is U with a kernel radius;
-    // else U interpolated at the centre
-    const bool kernelU = props_.twoWay() && props_.kernelRadius() > 0;
+    // the fluid's eps grad p exactly), and so is U with a kernel wider
+    // than the particle (couplingProperties::kernelSamplesU); else U
+    // interpolated at the centre
+    const bool kernelU = props_.kernelSamplesU();
 
     tmp<volVectorField> tgradp, tdivTau;
     for (const forceModel& model : forces_)
@@ -1250,16 +1253,15 @@ void Foam::demCoupling::coupleInserted()
     // Two-way: the fluid at these particles averaged over their kernels,
     // as at every exchange (a deposit of their own; the fluid's fields do
     // not change)
-    autoPtr<particleDeposit> sampler;
+    autoPtr<depositKernel> sampler;
     if (props_.twoWay())
     {
-        sampler.reset(new particleDeposit(mesh_, locator_));
+        sampler = depositKernel::New(props_, mesh_, locator_, UInterp_);
         scalarField solidVolume(mesh_.nCells(), 0), Kc(mesh_.nCells(), 0);
         vectorField Fc(mesh_.nCells(), Zero);
         sampler->deposit
         (
-            rec.position, rec.cell, rec.radius, props_.kernelRadius(),
-            rec.dragCoeff, rec.dragForce, solidVolume, Kc, Fc
+            rec.position, rec.cell, rec.radius, rec.dragCoeff, rec.dragForce, solidVolume, Kc, Fc
         );
     }
 
@@ -1294,7 +1296,7 @@ void Foam::demCoupling::updateForces()
     {
         clockTime clock;
 
-        if (!(props_.twoWay() && props_.kernelRadius() > 0))
+        if (!props_.kernelSamplesU())
         {
             UInterp_.update();
         }
@@ -1302,7 +1304,7 @@ void Foam::demCoupling::updateForces()
         // On the owning ranks: the records' forces
         scalar tauMin = GREAT;
         const List<FixedList<scalar, 7>> answer =
-            fluidForces(records_, props_.twoWay() ? &deposit_ : nullptr, tauMin);
+            fluidForces(records_, deposit_.get(), tauMin);
 
         // Back on the particles' ranks
         const label n = engine_().nLocal();

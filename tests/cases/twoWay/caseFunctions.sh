@@ -44,3 +44,34 @@ runSolver() {
             || { tail -30 log.colloidDEMFoam; exit 1; }
     fi
 }
+
+# setKernel [kernel]: the deposit kernel of the case's couplingProperties
+# (twoWay/kernel; the satellite kernel's kernelRadius removed for another
+# kernel); no argument: the case's own.  The test scripts pass $KERNEL,
+# set by ctest for the kernel variants of a test.
+setKernel() {
+    if [ -n "${1:-}" ]
+    then
+        foamDictionary constant/couplingProperties -entry twoWay/kernel \
+            -add "$1" > /dev/null
+        if [ "$1" != satellite ] && foamDictionary constant/couplingProperties \
+            -entry twoWay/kernelRadius > /dev/null 2>&1
+        then
+            foamDictionary constant/couplingProperties \
+                -entry twoWay/kernelRadius -remove > /dev/null
+        fi
+    fi
+}
+
+# checkTranspose: the deposit kernel checks at every sample that it is
+# the transpose of the deposit (debug switch; checkFluidFraction.py reads
+# the log lines)
+checkTranspose() {
+    cat >> system/controlDict <<'DICT'
+
+DebugSwitches
+{
+    depositKernel   1;
+}
+DICT
+}

@@ -6,6 +6,10 @@
   the coupling's sum over cells against its sum over the particles),
   and for the written field, with V from the mesh (writeCellVolumes) and
   the particles' volume from the DEM data file.
+- The sampling is the transpose of the deposit: at every sample (the
+  kernel's debug check in the log), sum over particles of volume x
+  sampled fluid fraction equals sum over cells of the deposited solid
+  volume x fluid fraction, to 1e-12 relative.
 - With a reference case (serial run of the same mesh): the same field,
   cell by cell, to 1e-10 (the deposit does not depend on the
   decomposition); or, with a tolerance given, the solid volume placed in
@@ -57,6 +61,13 @@ def main():
     print('log: %d steps, solid volume against particles: %.2e relative (max)'
           % (len(lines), worst))
     ok &= bool(lines) and worst <= 1e-12
+
+    checks = re.findall(r'depositKernel: transpose check: .*\(relative difference (\S+)\)', log)
+    worst = max(float(x) for x in checks) if checks else float('nan')
+    print('log: %d samples, particles\' volume x sampled fluid fraction against'
+          ' the cells\' deposited solid x fluid fraction: %.2e relative (max)'
+          % (len(checks), worst))
+    ok &= bool(checks) and worst <= 1e-12
 
     subprocess.run(['postProcess', '-case', case, '-func', 'writeCellVolumes',
                     '-latestTime'], check=True, stdout=subprocess.DEVNULL)

@@ -2,11 +2,12 @@
 # Fluid fraction of the packed bed (makePack.sh) on a hex, tet or
 # polyhedral mesh of its column (cells 2.5 diameters wide: particles
 # straddle cells and, on 2 ranks, processor boundaries), after one
-# coupling step: bounds, and the solid volume of the field against the
-# particles' volume (checkFluidFraction.py).  With a serial run's folder
-# as reference, the reconstructed field must equal the serial one.
+# coupling step: bounds, the solid volume of the field against the
+# particles' volume, and the sampling against the transpose of the
+# deposit (checkFluidFraction.py).  With a serial run's folder as
+# reference, the reconstructed field must equal the serial one.
 #
-# usage: runFluidFractionTest.sh hex|tet|polyDual packDir workDir [nProcs [serialDir [movedTolerance]]]
+# usage: [KERNEL=satellite|cellPoint] runFluidFractionTest.sh hex|tet|polyDual packDir workDir [nProcs [serialDir [movedTolerance]]]
 set -e
 mesh=$1
 pack=$2
@@ -20,6 +21,8 @@ mkdir 0
 cp "$here/fraction/U" "$here/fraction/p" 0/
 foamDictionary system/controlDict -entry endTime -set 1e-5 > /dev/null
 foamDictionary system/controlDict -entry writeInterval -set 1 > /dev/null
+setKernel "${KERNEL:-}"
+checkTranspose
 
 case $mesh in
     hex) cp "$here/fraction/blockMeshDict" system/

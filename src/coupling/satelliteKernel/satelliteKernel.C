@@ -1,4 +1,6 @@
-#include "particleDeposit.H"
+#include "satelliteKernel.H"
+#include "couplingProperties.H"
+#include "addToRunTimeSelectionTable.H"
 #include "processorPolyPatch.H"
 #include "processorCyclicPolyPatch.H"
 #include "cyclicPolyPatch.H"
@@ -6,14 +8,24 @@
 #include "mathematicalConstants.H"
 #include "UPtrList.H"
 
-Foam::particleDeposit::particleDeposit
+namespace Foam
+{
+    defineTypeNameAndDebug(satelliteKernel, 0);
+    addToRunTimeSelectionTable(depositKernel, satelliteKernel, dictionary);
+}
+
+
+Foam::satelliteKernel::satelliteKernel
 (
+    const couplingProperties& props,
     const fvMesh& mesh,
-    const particleLocator& locator
+    const particleLocator& locator,
+    const cellPointInterpolator&
 )
 :
     mesh_(mesh),
     locator_(locator),
+    kernelRadius_(props.kernelRadius()),
     satellites_(nShells_*nDirections_),
     procPatchOfNeighbour_(Pstream::nProcs(), -1),
     nRecords_(0)
@@ -70,7 +82,7 @@ Foam::Istream& Foam::operator>>(Istream& is, depositShare& t)
 }
 
 
-void Foam::particleDeposit::add
+void Foam::satelliteKernel::add
 (
     const depositShare& t,
     const label celli,
@@ -90,7 +102,7 @@ void Foam::particleDeposit::add
 }
 
 
-void Foam::particleDeposit::depositPoint
+void Foam::satelliteKernel::depositPoint
 (
     const depositShare& t,
     const label celli,
@@ -166,12 +178,11 @@ void Foam::particleDeposit::depositPoint
 }
 
 
-void Foam::particleDeposit::deposit
+void Foam::satelliteKernel::depositShares
 (
     const pointField& x,
     const labelList& cell,
     const scalarField& r,
-    const scalar kernelRadius,
     const scalarField& K,
     const vectorField& F,
     scalarField& solidVolume,
@@ -200,7 +211,7 @@ void Foam::particleDeposit::deposit
         const scalar vol = 4.0/3.0*constant::mathematical::pi*pow3(r[i]);
         const label celli = cell[i];
 
-        const scalar R = max(r[i], kernelRadius);
+        const scalar R = max(r[i], kernelRadius_);
 
         depositShare t{x[i], 1.0, vol, K[i], F[i], me, i, celli, -1};
 
@@ -345,7 +356,7 @@ void Foam::particleDeposit::deposit
 }
 
 
-void Foam::particleDeposit::sample
+void Foam::satelliteKernel::sampleFields
 (
     const volScalarField& s,
     const UPtrList<const volVectorField>& v,
