@@ -107,18 +107,25 @@ foreach(kernel satellite cellPoint)
             TIMEOUT 120 LABELS "case;twoWay" ENVIRONMENT "${kernelEnv}")
     endforeach()
 
+    # The tutorial's kernel is cellPoint; its satellite variant spreads
+    # each particle over one cell (kernel radius 0.25 mm)
+    if(kernel STREQUAL satellite)
+        set(suspensionEnv "${kernelEnv};KERNEL_RADIUS=2.5e-4")
+    else()
+        set(suspensionEnv "${kernelEnv}")
+    endif()
     add_test(NAME case.twoWay.suspension${k}
         COMMAND ${twoWayDir}/runSuspensionTest.sh ${twoWayWork}/suspension${k})
     set_tests_properties(case.twoWay.suspension${k} PROPERTIES
         TIMEOUT 180 LABELS "case;twoWay" FIXTURES_SETUP twoWaySuspension${k}
-        ENVIRONMENT "${kernelEnv}")
+        ENVIRONMENT "${suspensionEnv}")
 
     add_test(NAME case.twoWay.suspension.parallel${k}
         COMMAND ${twoWayDir}/runSuspensionTest.sh ${twoWayWork}/suspension_parallel${k}
                 2 ${twoWayWork}/suspension${k})
     set_tests_properties(case.twoWay.suspension.parallel${k} PROPERTIES
         TIMEOUT 180 LABELS "case;twoWay" PROCESSORS 2
-        FIXTURES_REQUIRED twoWaySuspension${k} ENVIRONMENT "${kernelEnv}")
+        FIXTURES_REQUIRED twoWaySuspension${k} ENVIRONMENT "${suspensionEnv}")
 endforeach()
 
 # twoWay.badInput.*: bad two-way settings stop the solver before anything

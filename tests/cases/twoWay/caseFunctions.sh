@@ -45,15 +45,21 @@ runSolver() {
     fi
 }
 
-# setKernel [kernel]: the deposit kernel of the case's couplingProperties
-# (twoWay/kernel; the satellite kernel's kernelRadius removed for another
-# kernel); no argument: the case's own.  The test scripts pass $KERNEL,
-# set by ctest for the kernel variants of a test.
+# setKernel [kernel [radius]]: the deposit kernel of the case's
+# couplingProperties (twoWay/kernel; the satellite kernel's kernelRadius
+# set to radius [m] if given, removed for another kernel); no argument:
+# the case's own.  The test scripts pass $KERNEL and $KERNEL_RADIUS, set by
+# ctest for the kernel variants of a test.
 setKernel() {
     if [ -n "${1:-}" ]
     then
         foamDictionary constant/couplingProperties -entry twoWay/kernel \
-            -add "$1" > /dev/null
+            -set "$1" > /dev/null
+        if [ -n "${2:-}" ]
+        then
+            foamDictionary constant/couplingProperties \
+                -entry twoWay/kernelRadius -set "$2" > /dev/null
+        fi
         if [ "$1" != satellite ] && foamDictionary constant/couplingProperties \
             -entry twoWay/kernelRadius > /dev/null 2>&1
         then
