@@ -23,6 +23,12 @@
 #   step to 1e-10, and the momentum of fluid plus particles follows the
 #   particles' weight less buoyancy to within |W| x one DEM step (the
 #   velocity-Verlet half kick).
+# twoWay.demGrid: the momentum test's periodic box on 2 ranks, the fluid
+#   cut in x where LIGGGHTS would cut the DEM in z: the coupling asks
+#   LIGGGHTS for the grid 2 1 1 (at least 95 % of the fluid volume on the
+#   rank of its DEM subdomain, at most 5 % of the records to another
+#   rank), the momentum balance holds, and a run resumed from half-way asks
+#   for the same grid and ends with the particles of the uninterrupted run.
 # twoWay.suspension[.parallel]: the settlingSuspension tutorial (4584
 #   spheres, 10 % solids, closed column) at test size, 20 coupling steps:
 #   the particles settle, none is lost, and 2 ranks (METIS) give the mean
@@ -38,8 +44,8 @@ set_tests_properties(case.twoWay.pack PROPERTIES
 
 # Each of these runs with both deposit kernels: the satellite kernel
 # (twoWay/kernel satellite, the default: test names as they are) and the
-# cell-point kernel (names ending .cellPoint; KERNEL=cellPoint makes the
-# scripts set twoWay/kernel cellPoint).  With the cell-point kernel the
+# cell-point kernel (names ending .cellPoint; COLLOIDFOAM_KERNEL=cellPoint
+# makes the scripts set twoWay/kernel cellPoint).  With the cell-point kernel the
 # Ergun section ends one cell lower (bedPressureDrop.py: the kernel reaches
 # one cell beyond a particle's, and the bed's surface is in the cell above
 # the section).
@@ -49,7 +55,7 @@ foreach(kernel satellite cellPoint)
     else()
         set(k ".${kernel}")
     endif()
-    set(kernelEnv "PYTHONDONTWRITEBYTECODE=1;KERNEL=${kernel}")
+    set(kernelEnv "PYTHONDONTWRITEBYTECODE=1;COLLOIDFOAM_KERNEL=${kernel}")
 
     foreach(model A B)
         foreach(Us 1e-4 1e-3 1e-2 3e-2 1e-1)
@@ -110,7 +116,7 @@ foreach(kernel satellite cellPoint)
     # The tutorial's kernel is cellPoint; its satellite variant spreads
     # each particle over one cell (kernel radius 0.25 mm)
     if(kernel STREQUAL satellite)
-        set(suspensionEnv "${kernelEnv};KERNEL_RADIUS=2.5e-4")
+        set(suspensionEnv "${kernelEnv};COLLOIDFOAM_KERNEL_RADIUS=2.5e-4")
     else()
         set(suspensionEnv "${kernelEnv}")
     endif()
@@ -119,6 +125,14 @@ foreach(kernel satellite cellPoint)
     set_tests_properties(case.twoWay.suspension${k} PROPERTIES
         TIMEOUT 180 LABELS "case;twoWay" FIXTURES_SETUP twoWaySuspension${k}
         ENVIRONMENT "${suspensionEnv}")
+
+    # The DEM's grid chosen to fit the fluid's parts, and kept on resuming;
+    # with the kernel's transpose check in a periodic box on 2 ranks
+    add_test(NAME case.twoWay.demGrid${k}
+        COMMAND ${twoWayDir}/runDemGridTest.sh ${twoWayWork}/demGrid${k})
+    set_tests_properties(case.twoWay.demGrid${k} PROPERTIES
+        TIMEOUT 180 LABELS "case;twoWay;throughput" PROCESSORS 2
+        ENVIRONMENT "${kernelEnv}")
 
     add_test(NAME case.twoWay.suspension.parallel${k}
         COMMAND ${twoWayDir}/runSuspensionTest.sh ${twoWayWork}/suspension_parallel${k}
@@ -133,7 +147,7 @@ endforeach()
 foreach(variant unknownForceModel unknownDragModel epsilonMinZero epsilonMinOne
                 unknownModelType subCycles steadyState noPIMPLE
                 modelBPressureGradient modelAWithoutPressureGradient
-                epsilonMinAboveBed)
+                epsilonMinAboveBed unknownKernel kernelRadiusWithCellPoint)
     add_test(NAME case.twoWay.badInput.${variant}
         COMMAND ${twoWayDir}/runBadInputTest.sh ${variant} ${twoWayWork}/pack
                 ${twoWayWork}/badInput_${variant})

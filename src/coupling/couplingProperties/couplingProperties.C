@@ -135,16 +135,16 @@ Foam::couplingProperties::couplingProperties(const objectRegistry& obr)
         }
 
         kernel_ = tw.getOrDefault<word>("kernel", "satellite");
-        if (kernel_ != "satellite" && tw.found("kernelRadius"))
+        kernelRadius_ = tw.getOrDefault<scalar>("kernelRadius", 0);
+        if (kernel_ != "satellite" && kernelRadius_ != 0)
         {
             FatalIOErrorInFunction(tw)
-                << "Keyword 'kernelRadius' in " << tw.name() << " is for"
-                << " the satellite kernel, but 'kernel' is '" << kernel_
-                << "', whose support is set by the mesh: remove"
-                << " kernelRadius, or set kernel satellite"
+                << "Keyword 'kernelRadius' in " << tw.name() << " is "
+                << kernelRadius_ << " m, but 'kernel' is '" << kernel_
+                << "', whose support is set by the mesh; allowed: 0 (or"
+                << " no kernelRadius), or kernel satellite"
                 << exit(FatalIOError);
         }
-        kernelRadius_ = tw.getOrDefault<scalar>("kernelRadius", 0);
         if (kernelRadius_ < 0)
         {
             FatalIOErrorInFunction(tw)
@@ -159,8 +159,9 @@ Foam::couplingProperties::couplingProperties(const objectRegistry& obr)
             FatalIOErrorInFunction(tw)
                 << "Keyword 'selfInducedVelocity' in " << tw.name()
                 << " is 'yes' but 'kernelRadius' is " << kernelRadius_
-                << ": the correction F/(5 pi mu R) needs a kernel radius R"
-                << " > 0 [m], at least two cell sizes" << exit(FatalIOError);
+                << ": the correction F/(5 pi mu R) needs the satellite"
+                << " kernel (kernel satellite) with a kernel radius R > 0"
+                << " [m], at least two cell sizes" << exit(FatalIOError);
         }
         clipFluidFraction_ =
             tw.getOrDefault<bool>("clipFluidFraction", false);

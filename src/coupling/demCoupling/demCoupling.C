@@ -154,19 +154,77 @@ void Foam::demCoupling::startDEM()
 
     // Resuming, each rank's DEM file is that of the rank it had in
     // LIGGGHTS; a fresh start takes LIGGGHTS' order, then maybe another
-    openDEM(logFile, screenFile, restart_.resume() ? restart_.demRank() : -1);
+    if (restart_.resume())
+    {
+        demGrid_ = restart_.demGrid();
+        openDEM(logFile, screenFile, restart_.demRank(), demGrid_);
+        if (demGrid_[0] > 0)
+        {
+            Info<< "DEM subdomains: a grid of " << demGrid_ << ", as the"
+                << " written run asked of LIGGGHTS" << endl;
+        }
+    }
+    else
+    {
+        openDEM(logFile, screenFile, -1, demGrid_);
+    }
     if (Pstream::parRun() && !restart_.resume())
     {
-        const label demRank = matchDEMRanks();
-        if (returnReduce(demRank != Pstream::myProcNo(), orOp<bool>()))
+        const label demRank = chooseDEMDecomposition();
+        if
+        (
+            demGrid_[0] > 0
+         || returnReduce(demRank != Pstream::myProcNo(), orOp<bool>())
+        )
         {
             // LIGGGHTS gives its subdomains to its ranks in their order:
-            // open it again with its ranks in the matching order (the
-            // script runs a second time; the log is the second run's)
-            Info<< "Opening LIGGGHTS again with its ranks in that order"
-                << endl;
+            // open it again with that grid and its ranks in the matching
+            // order (the script runs a second time; the log is the second
+            // run's)
+            Info<< "Opening LIGGGHTS again with these subdomains" << endl;
             engine_.clear();
-            openDEM(logFile, screenFile, demRank);
+            openDEM(logFile, screenFile, demRank, demGrid_);
+
+            // What it made of them (a script with its own processors
+            // command overrides the grid asked)
+            int grid[3];
+            engine_->processorGrid(grid);
+            double lo[3], hi[3];
+            engine_->subBox(lo, hi);
+            List<boundBox> boxes(Pstream::nProcs());
+            boxes[Pstream::myProcNo()] = boundBox
+            (
+                demUnits::length*point(lo[0], lo[1], lo[2]),
+                demUnits::length*point(hi[0], hi[1], hi[2])
+            );
+            Pstream::gatherList(boxes);
+            Pstream::scatterList(boxes);
+            const List<scalarList> overlap = fluidInBoxes(boxes);
+            scalar total = 0, same = 0;
+            forAll(overlap, f)
+            {
+                total += sum(overlap[f]);
+                same += overlap[f][f];
+            }
+            Info<< "DEM subdomains: grid " << grid[0] << ' ' << grid[1]
+                << ' ' << grid[2] << ", " << 100*same/max(total, VSMALL)
+                << " % of the fluid volume in the DEM box on the rank of its"
+                << " DEM subdomain" << endl;
+            if
+            (
+                demGrid_[0] > 0
+             && (grid[0] != demGrid_[0] || grid[1] != demGrid_[1]
+              || grid[2] != demGrid_[2])
+            )
+            {
+                WarningInFunction
+                    << "LIGGGHTS was asked for a grid of " << demGrid_
+                    << " subdomains and made " << grid[0] << ' ' << grid[1]
+                    << ' ' << grid[2] << ": the DEM script "
+                    << props_.demScript() << " has a processors command of"
+                    << " its own; more particles' records then go to"
+                    << " other ranks" << endl;
+            }
         }
     }
     liggghtsEngine& dem = engine_();
@@ -298,13 +356,25 @@ void Foam::demCoupling::openDEM
 (
     const fileName& logFile,
     const fileName& screenFile,
-    const label demRank
+    const label demRank,
+    const FixedList<label, 3>& grid
 )
 {
     const Time& runTime = mesh_.time();
 
     engine_.reset(new liggghtsEngine(logFile, screenFile, demRank));
     liggghtsEngine& dem = engine_();
+
+    if (grid[0] > 0)
+    {
+        // Subdomain (i, j, k) on LIGGGHTS rank i + Px (j + Py k)
+        dem.command
+        (
+            "processors " + std::to_string(grid[0]) + " "
+          + std::to_string(grid[1]) + " " + std::to_string(grid[2])
+          + " map xyz"
+        );
+    }
 
     // Set before the script: the script may only refine them
     dem.command(std::string("units ") + demUnits::style);
@@ -340,27 +410,14 @@ void Foam::demCoupling::openDEM
 }
 
 
-Foam::label Foam::demCoupling::matchDEMRanks() const
+Foam::List<Foam::scalarList> Foam::demCoupling::fluidInBoxes
+(
+    const List<boundBox>& boxes
+) const
 {
-    const label nProcs = Pstream::nProcs();
     const label me = Pstream::myProcNo();
-
-    // Every DEM subdomain's box [m] (one per rank: boxes, not particles)
-    double lo[3], hi[3];
-    engine_->subBox(lo, hi);
-    List<boundBox> boxes(nProcs);
-    boxes[me] = boundBox
-    (
-        demUnits::length*point(lo[0], lo[1], lo[2]),
-        demUnits::length*point(hi[0], hi[1], hi[2])
-    );
-    Pstream::gatherList(boxes);
-    Pstream::scatterList(boxes);
-
-    // The volume of this rank's cells (by their centres) in each
-    // subdomain [m^3]
-    List<scalarList> overlap(nProcs);
-    overlap[me].setSize(nProcs, 0);
+    List<scalarList> overlap(Pstream::nProcs());
+    overlap[me].setSize(boxes.size(), 0);
     const vectorField& C = mesh_.C();
     const scalarField& V = mesh_.V();
     forAll(C, celli)
@@ -376,19 +433,34 @@ Foam::label Foam::demCoupling::matchDEMRanks() const
     }
     Pstream::gatherList(overlap);
     Pstream::scatterList(overlap);
+    return overlap;
+}
 
-    // Largest overlap first (every rank computes the same answer)
-    labelList demRankOf(nProcs, -1);
-    labelList fluidRankOf(nProcs, -1);
-    for (label n = 0; n < nProcs; ++n)
+
+namespace
+{
+
+// Each fluid rank's box, the largest overlap first (every rank computes
+// the same answer), and the fluid volume on the rank of its box
+Foam::labelList matchBoxes
+(
+    const Foam::List<Foam::scalarList>& overlap,
+    Foam::scalar& matched
+)
+{
+    using namespace Foam;
+    const label n = overlap.size();
+    labelList boxOf(n, -1);
+    labelList fluidOf(n, -1);
+    for (label m = 0; m < n; ++m)
     {
         scalar best = -1;
         label bestF = -1, bestD = -1;
-        for (label f = 0; f < nProcs; ++f)
+        for (label f = 0; f < n; ++f)
         {
-            for (label d = 0; d < nProcs && demRankOf[f] < 0; ++d)
+            for (label d = 0; d < n && boxOf[f] < 0; ++d)
             {
-                if (fluidRankOf[d] < 0 && overlap[f][d] > best)
+                if (fluidOf[d] < 0 && overlap[f][d] > best)
                 {
                     best = overlap[f][d];
                     bestF = f;
@@ -396,24 +468,59 @@ Foam::label Foam::demCoupling::matchDEMRanks() const
                 }
             }
         }
-        demRankOf[bestF] = bestD;
-        fluidRankOf[bestD] = bestF;
+        boxOf[bestF] = bestD;
+        fluidOf[bestD] = bestF;
     }
+    matched = 0;
+    for (label f = 0; f < n; ++f)
+    {
+        matched += overlap[f][boxOf[f]];
+    }
+    return boxOf;
+}
 
-    scalar total = 0, same = 0, matched = 0;
-    for (label f = 0; f < nProcs; ++f)
+} // End anonymous namespace
+
+
+Foam::label Foam::demCoupling::chooseDEMDecomposition()
+{
+    const label nProcs = Pstream::nProcs();
+    const label me = Pstream::myProcNo();
+
+    // LIGGGHTS' own subdomains, one per rank (boxes, not particles) [m]
+    double lo[3], hi[3];
+    engine_->subBox(lo, hi);
+    List<boundBox> boxes(nProcs);
+    boxes[me] = boundBox
+    (
+        demUnits::length*point(lo[0], lo[1], lo[2]),
+        demUnits::length*point(hi[0], hi[1], hi[2])
+    );
+    Pstream::gatherList(boxes);
+    Pstream::scatterList(boxes);
+
+    const List<scalarList> overlap = fluidInBoxes(boxes);
+    scalar matched = 0;
+    const labelList boxOf = matchBoxes(overlap, matched);
+    scalar total = 0, same = 0;
+    forAll(overlap, f)
     {
         total += sum(overlap[f]);
         same += overlap[f][f];
-        matched += overlap[f][demRankOf[f]];
     }
     total = max(total, VSMALL);
 
-    // LIGGGHTS' own order unless the matching is better
-    const bool reorder = matched > same + 1e-9*total;
+    int grid[3];
+    engine_->processorGrid(grid);
     Info<< "DEM subdomains and fluid parts: " << 100*same/total
         << " % of the fluid volume in the DEM box is on the rank of its"
-        << " DEM subdomain in LIGGGHTS' order";
+        << " DEM subdomain in LIGGGHTS' order (grid " << grid[0] << ' '
+        << grid[1] << ' ' << grid[2] << ")";
+
+    // LIGGGHTS' own order unless the matching is better
+    const bool reorder = matched > same + 1e-9*total;
+    scalar best = reorder ? matched : same;
+    label demRank = reorder ? boxOf[me] : me;
     if (reorder)
     {
         Info<< ", " << 100*matched/total << " % with each subdomain on the"
@@ -421,7 +528,71 @@ Foam::label Foam::demCoupling::matchDEMRanks() const
     }
     Info<< endl;
 
-    return reorder ? demRankOf[me] : me;
+    // Every other grid of equal subdomains of the box (LIGGGHTS splits it
+    // evenly unless told otherwise), its subdomain (i, j, k) on LIGGGHTS
+    // rank i + Px (j + Py k) ('map xyz'), each matched to a fluid rank
+    bool periodic[3];
+    engine_->box(lo, hi, periodic);
+    const point boxLo = demUnits::length*point(lo[0], lo[1], lo[2]);
+    const vector boxSpan =
+        demUnits::length*point(hi[0], hi[1], hi[2]) - boxLo;
+    const bool flat = engine_->dimension() == 2;
+    for (label px = 1; px <= nProcs; ++px)
+    {
+        for (label py = 1; px*py <= nProcs; ++py)
+        {
+            const label pz = nProcs/(px*py);
+            if
+            (
+                px*py*pz != nProcs || (flat && pz != 1)
+             || (px == grid[0] && py == grid[1] && pz == grid[2])
+            )
+            {
+                continue;
+            }
+            List<boundBox> even(nProcs);
+            for (label k = 0; k < pz; ++k)
+            {
+                for (label j = 0; j < py; ++j)
+                {
+                    for (label i = 0; i < px; ++i)
+                    {
+                        const vector a
+                        (
+                            scalar(i)/px, scalar(j)/py, scalar(k)/pz
+                        );
+                        const vector b
+                        (
+                            scalar(i + 1)/px, scalar(j + 1)/py,
+                            scalar(k + 1)/pz
+                        );
+                        even[i + px*(j + py*k)] = boundBox
+                        (
+                            boxLo + cmptMultiply(a, boxSpan),
+                            boxLo + cmptMultiply(b, boxSpan)
+                        );
+                    }
+                }
+            }
+            scalar evenMatched = 0;
+            const labelList evenBoxOf =
+                matchBoxes(fluidInBoxes(even), evenMatched);
+            if (evenMatched > best + 0.01*total)
+            {
+                best = evenMatched;
+                demRank = evenBoxOf[me];
+                demGrid_ = FixedList<label, 3>({px, py, pz});
+            }
+        }
+    }
+    if (demGrid_[0] > 0)
+    {
+        Info<< "DEM subdomains: a grid of " << demGrid_ << " equal"
+            << " subdomains puts " << 100*best/total << " % of the fluid"
+            << " volume on the rank of its subdomain" << endl;
+    }
+
+    return demRank;
 }
 
 
@@ -837,9 +1008,11 @@ Foam::demCoupling::demCoupling
     UInterp_(U),
     records_(),
     deposit_(),
+    insertedSampler_(),
     proc_(),
     engine_(),
     restart_(U.mesh()),
+    demGrid_(label(0)),
     nCouplingSteps_(0),
     analysedAt_(-1),
     nAnalyses_(0),
@@ -865,6 +1038,7 @@ Foam::demCoupling::demCoupling
             << ", fluid fraction bounded below by "
             << props_.epsilonMin() << endl;
         deposit_ = depositKernel::New(props_, mesh_, locator_, UInterp_);
+        Info<< "Deposit kernel: " << props_.kernel() << endl;
 
         voidfraction_.reset
         (
@@ -1253,10 +1427,14 @@ void Foam::demCoupling::coupleInserted()
     // Two-way: the fluid at these particles averaged over their kernels,
     // as at every exchange (a deposit of their own; the fluid's fields do
     // not change)
-    autoPtr<depositKernel> sampler;
-    if (props_.twoWay())
+    if (props_.twoWay() && !insertedSampler_.valid())
     {
-        sampler = depositKernel::New(props_, mesh_, locator_, UInterp_);
+        insertedSampler_ =
+            depositKernel::New(props_, mesh_, locator_, UInterp_);
+    }
+    depositKernel* sampler = insertedSampler_.get();
+    if (sampler)
+    {
         scalarField solidVolume(mesh_.nCells(), 0), Kc(mesh_.nCells(), 0);
         vectorField Fc(mesh_.nCells(), Zero);
         sampler->deposit
@@ -1267,7 +1445,7 @@ void Foam::demCoupling::coupleInserted()
 
     scalar tauMin = GREAT;
     const List<FixedList<scalar, 7>> answer =
-        fluidForces(rec, sampler.get(), tauMin);
+        fluidForces(rec, sampler, tauMin);
     List<FixedList<scalar, 7>> perAtom(atoms.size(), FixedList<scalar, 7>(0.0));
     rec.answer(answer, perAtom);
 
@@ -1553,7 +1731,7 @@ void Foam::demCoupling::write
         if (!atStart)
         {
             const string problem =
-                restart_.write(dem, nInserted_, contacts_.get());
+                restart_.write(dem, nInserted_, contacts_.get(), demGrid_);
             if (!problem.empty())
             {
                 restart_.abandonWrite(problem);

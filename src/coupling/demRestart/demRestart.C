@@ -64,7 +64,8 @@ Foam::demRestart::demRestart(const fvMesh& mesh)
     demStep_(0),
     nInserted_(0),
     demTimeStepSize_(0),
-    demRank_(Pstream::myProcNo())
+    demRank_(Pstream::myProcNo()),
+    demGrid_(label(0))
 {
     const Time& runTime = mesh.time();
 
@@ -91,6 +92,11 @@ Foam::demRestart::demRestart(const fvMesh& mesh)
         nInserted_ = marker.get<label>("nInserted");
         const label nProcs = marker.get<label>("nProcs");
         demTimeStepSize_ = marker.get<scalar>("demTimeStep");
+        // Written only by runs that asked LIGGGHTS for a grid
+        demGrid_ = marker.getOrDefault<FixedList<label, 3>>
+        (
+            "demGrid", FixedList<label, 3>(label(0))
+        );
         if (nProcs != Pstream::nProcs())
         {
             FatalIOErrorInFunction(marker)
@@ -324,7 +330,8 @@ Foam::string Foam::demRestart::write
 (
     liggghtsEngine& dem,
     const label nInserted,
-    const contactAnalysis* contacts
+    const contactAnalysis* contacts,
+    const FixedList<label, 3>& demGrid
 ) const
 {
     const Time& runTime = mesh_.time();
@@ -436,6 +443,10 @@ Foam::string Foam::demRestart::write
     marker.add("nInserted", nInserted);
     marker.add("nProcs", Pstream::nProcs());
     marker.add("demTimeStep", dem.timeStepSize()*demUnits::time);
+    if (demGrid[0] > 0)
+    {
+        marker.add("demGrid", demGrid);
+    }
     // Read back before it counts: a small file can fail unseen when it is
     // closed on a full disk
     bool written = marker.regIOobject::write();

@@ -27,7 +27,6 @@ Foam::autoPtr<Foam::depositKernel> Foam::depositKernel::New
             << dictionaryConstructorTablePtr_->sortedToc()
             << exit(FatalIOError);
     }
-    Info<< "Deposit kernel: " << kernel << endl;
     return cstrIter()(props, mesh, locator, tets);
 }
 

@@ -463,6 +463,22 @@ void Foam::liggghtsEngine::subBox(double lo[3], double hi[3]) const
 }
 
 
+void Foam::liggghtsEngine::processorGrid(int grid[3]) const
+{
+    const LAMMPS_NS::Comm* comm = engine(lmp_)->comm;
+    for (int k = 0; k < 3; ++k)
+    {
+        grid[k] = comm->procgrid[k];
+    }
+}
+
+
+int Foam::liggghtsEngine::dimension() const
+{
+    return engine(lmp_)->domain->dimension;
+}
+
+
 int Foam::liggghtsEngine::rank() const
 {
     return engine(lmp_)->comm->me;

@@ -67,8 +67,9 @@ python3 - log.colloidDEMFoam postProcessing/contactAnalysis/0/contacts.csv <<'PY
 import re, sys
 log = open(sys.argv[1]).read()
 m = re.search(r"DEM subdomains and fluid parts: (\S+) % of the fluid volume in the DEM box is on"
-              r" the rank of its DEM subdomain in LIGGGHTS' order, (\S+) % with each subdomain", log)
-if not m or 'Opening LIGGGHTS again with its ranks in that order' not in log:
+              r" the rank of its DEM subdomain in LIGGGHTS' order \(grid \d+ \d+ \d+\),"
+              r" (\S+) % with each subdomain", log)
+if not m or 'Opening LIGGGHTS again with these subdomains' not in log:
     sys.exit('FAIL: no reorder of the DEM ranks in the log')
 own, matched = float(m.group(1)), float(m.group(2))
 records = [float(x) for x in re.findall(r'Records: (\S+) % of the particles', log)]

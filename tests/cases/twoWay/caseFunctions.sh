@@ -48,7 +48,8 @@ runSolver() {
 # setKernel [kernel [radius]]: the deposit kernel of the case's
 # couplingProperties (twoWay/kernel; the satellite kernel's kernelRadius
 # set to radius [m] if given, removed for another kernel); no argument:
-# the case's own.  The test scripts pass $KERNEL and $KERNEL_RADIUS, set by
+# the case's own.  The test scripts pass $COLLOIDFOAM_KERNEL and
+# $COLLOIDFOAM_KERNEL_RADIUS, set by
 # ctest for the kernel variants of a test.
 setKernel() {
     if [ -n "${1:-}" ]

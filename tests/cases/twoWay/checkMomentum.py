@@ -12,6 +12,10 @@
    particles' momentum at a write lags the impulses by up to half a
    step's; the fluid's implicit drag term is given back one step later.
 
+3. With the deposit kernel's debug check on (checkTranspose of the test
+   scripts), the sampling is the transpose of the deposit at every sample
+   to 1e-12 (the log's 'depositKernel: transpose check' lines).
+
 usage: checkMomentum.py caseDir
 """
 import math
@@ -94,6 +98,13 @@ def main():
         ' '.join('%.6g' % (momentum[-1][k] - momentum[0][k]) for k in range(3)),
         ' '.join('%.6g' % x for x in span)))
     ok &= worst <= bound
+
+    checks = [float(x) for x in re.findall(
+        r'depositKernel: transpose check: .*\(relative difference (\S+)\)', log)]
+    if checks:
+        print('transpose of the deposit: %d samples, %.2e relative (max)'
+              % (len(checks), max(checks)))
+        ok &= max(checks) <= 1e-12
 
     print('PASS' if ok else 'FAIL')
     return 0 if ok else 1

@@ -9,6 +9,7 @@
 #             modelBPressureGradient modelAWithoutPressureGradient
 #             epsilonMinAboveBed (the bed's cells, eps ~ 0.39, below
 #             epsilonMin 0.5: the fluid fraction would be clipped)
+#             unknownKernel kernelRadiusWithCellPoint
 set -e
 variant=$1
 pack=$2
@@ -54,6 +55,13 @@ case $variant in
     epsilonMinAboveBed)
         foamDictionary $props -entry twoWay/epsilonMin -set 0.5 > /dev/null
         expect="the particles leave less fluid than twoWay/epsilonMin 0.5 in [0-9]+ cells \(lowest 0\.[0-9]+\) of constant/couplingProperties" ;;
+    unknownKernel)
+        foamDictionary $props -entry twoWay/kernel -set gaussian > /dev/null
+        expect="Keyword 'kernel' in .*couplingProperties\"?::twoWay is 'gaussian'; allowed: .*cellPoint.*satellite" ;;
+    kernelRadiusWithCellPoint)
+        foamDictionary $props -entry twoWay/kernel -set cellPoint > /dev/null
+        foamDictionary $props -entry twoWay/kernelRadius -set 1e-4 > /dev/null
+        expect="Keyword 'kernelRadius' in .*couplingProperties.twoWay\"? is 0.0001 m, but 'kernel' is 'cellPoint', whose support is set by the mesh; allowed: 0" ;;
     *)  echo "unknown variant $variant"; exit 2 ;;
 esac
 

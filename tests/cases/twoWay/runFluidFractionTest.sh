@@ -7,7 +7,7 @@
 # deposit (checkFluidFraction.py).  With a serial run's folder as
 # reference, the reconstructed field must equal the serial one.
 #
-# usage: [KERNEL=satellite|cellPoint] runFluidFractionTest.sh hex|tet|polyDual packDir workDir [nProcs [serialDir [movedTolerance]]]
+# usage: [COLLOIDFOAM_KERNEL=satellite|cellPoint] runFluidFractionTest.sh hex|tet|polyDual packDir workDir [nProcs [serialDir [movedTolerance]]]
 set -e
 mesh=$1
 pack=$2
@@ -21,7 +21,7 @@ mkdir 0
 cp "$here/fraction/U" "$here/fraction/p" 0/
 foamDictionary system/controlDict -entry endTime -set 1e-5 > /dev/null
 foamDictionary system/controlDict -entry writeInterval -set 1 > /dev/null
-setKernel "${KERNEL:-}"
+setKernel "${COLLOIDFOAM_KERNEL:-}"
 checkTranspose
 
 case $mesh in

@@ -2,7 +2,7 @@
 # Momentum of a closed two-way run: 200 spheres settling in a fully
 # periodic box of water (checkMomentum.py).
 #
-# usage: [KERNEL=satellite|cellPoint] runMomentumTest.sh A|B workDir
+# usage: [COLLOIDFOAM_KERNEL=satellite|cellPoint] runMomentumTest.sh A|B workDir
 set -e
 model=$1
 work=$2
@@ -11,7 +11,8 @@ source "$here/caseFunctions.sh"
 copyCase "$here/periodicBox" "$work"
 python3 "$COLLOIDFOAM_TUTORIALS/twoWay/makeSuspension.py" constant/DEM/suspension.data 200 50 1000 1000 1000 12345 periodic
 setModel "$model"
-setKernel "${KERNEL:-}"
+setKernel "${COLLOIDFOAM_KERNEL:-}"
+checkTranspose
 blockMesh > log.blockMesh 2>&1
 runSolver 1
 

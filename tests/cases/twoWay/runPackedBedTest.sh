@@ -3,7 +3,7 @@
 # two-way coupling: the pressure drop across the bed's interior against
 # Ergun's equation (the tutorial's bedPressureDrop.py).
 #
-# usage: [KERNEL=satellite|cellPoint] runPackedBedTest.sh A|B Us packDir workDir [nProcs [serialDir]]
+# usage: [COLLOIDFOAM_KERNEL=satellite|cellPoint] runPackedBedTest.sh A|B Us packDir workDir [nProcs [serialDir]]
 #   Us: superficial velocity [m/s]; nProcs 2: decomposePar (METIS) and
 #   mpirun -np 2, then reconstructPar
 set -e
@@ -17,7 +17,7 @@ source "$here/prepareCase.sh"
 cp -r 0.orig 0
 sed -i "s/^Us .*;/Us $Us;/" 0/U
 setModel "$model"
-setKernel "${KERNEL:-}"
+setKernel "${COLLOIDFOAM_KERNEL:-}"
 blockMesh > log.blockMesh 2>&1
 
 runSolver "$nProcs"

@@ -3,7 +3,7 @@
 # mean velocity of the particles in the middle of the column, serial and
 # on 2 ranks (METIS), must agree within 0.1 % (checkSuspension.py).
 #
-# usage: [KERNEL=satellite|cellPoint [KERNEL_RADIUS=R]] runSuspensionTest.sh workDir [nProcs serialDir]
+# usage: [COLLOIDFOAM_KERNEL=satellite|cellPoint [COLLOIDFOAM_KERNEL_RADIUS=R]] runSuspensionTest.sh workDir [nProcs serialDir]
 set -e
 work=$1
 nProcs=${2:-1}
@@ -16,7 +16,7 @@ python3 "$COLLOIDFOAM_TUTORIALS/twoWay/makeSuspension.py" \
 cp -r 0.orig 0
 foamDictionary system/controlDict -entry endTime -set 2e-3 > /dev/null
 foamDictionary system/controlDict -entry writeInterval -set 20 > /dev/null
-setKernel "${KERNEL:-}" "${KERNEL_RADIUS:-}"
+setKernel "${COLLOIDFOAM_KERNEL:-}" "${COLLOIDFOAM_KERNEL_RADIUS:-}"
 blockMesh > log.blockMesh 2>&1
 
 runSolver "$nProcs"

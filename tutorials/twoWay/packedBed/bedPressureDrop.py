@@ -74,7 +74,8 @@ def interior_top(case):
     stops one cell lower (else the surface's partly filled cell lowers
     the drag of the section's top cell: -2.6 % (A), -3.4 % (B) against
     Ergun at Us 1e-2 m/s)."""
-    text = open(os.path.join(case, 'constant', 'couplingProperties')).read()
+    text = re.sub(r'//.*', '', open(
+        os.path.join(case, 'constant', 'couplingProperties')).read())
     kernel = re.search(r'\bkernel\s+(\w+)\s*;', text)
     return Y_HI - CELL if kernel and kernel.group(1) == 'cellPoint' else Y_HI
 
