@@ -180,8 +180,8 @@ void Foam::cellPointKernel::depositShares
         if (tets_.tetWeights(x[k], celli, tri, w))
         {
             // A particle on its cell's boundary, or outside it by
-            // round-off: the nearest point of the tet (negative weights
-            // to 0), so that every share stays non-negative
+            // round-off: negative weights set to 0 and the rest scaled to
+            // add up to 1, so that every share stays non-negative
             scalar sum = 0;
             for (scalar& wi : w)
             {
