@@ -22,7 +22,8 @@ Projection (stated with the figures it prints):
            record sent and answered): the bytes per such particle from
            the largest rank count measured, times the share of such
            particles (the solver's Records line).  With the DEM's ranks
-           matched to METIS' parts (demCoupling::matchDEMRanks) that share
+           matched to METIS' parts (demCoupling::chooseDEMDecomposition)
+           that share
            comes from where the two decompositions' boundaries differ:
            estimated as the largest rank count's share times the ratio of
            the DEM grids' cut areas, at most 1 - 1/P (every particle but

@@ -29,6 +29,9 @@
 #   rank of its DEM subdomain, at most 5 % of the records to another
 #   rank), the momentum balance holds, and a run resumed from half-way asks
 #   for the same grid and ends with the particles of the uninterrupted run.
+# twoWay.demGrid.4ranks: the same on 4 ranks (oversubscribed), the fluid
+#   cut in x and y and its parts renumbered, so that a wrong rank order or
+#   map of the grid would show: grid 2 2 1 instead of LIGGGHTS' 1 2 2.
 # twoWay.suspension[.parallel]: the settlingSuspension tutorial (4584
 #   spheres, 10 % solids, closed column) at test size, 20 coupling steps:
 #   the particles settle, none is lost, and 2 ranks (METIS) give the mean
@@ -141,6 +144,12 @@ foreach(kernel satellite cellPoint)
         TIMEOUT 180 LABELS "case;twoWay" PROCESSORS 2
         FIXTURES_REQUIRED twoWaySuspension${k} ENVIRONMENT "${suspensionEnv}")
 endforeach()
+
+add_test(NAME case.twoWay.demGrid.4ranks
+    COMMAND ${twoWayDir}/runDemGridTest.sh ${twoWayWork}/demGrid_4ranks 4)
+set_tests_properties(case.twoWay.demGrid.4ranks PROPERTIES
+    TIMEOUT 240 LABELS "case;twoWay;throughput" PROCESSORS 4
+    ENVIRONMENT "PYTHONDONTWRITEBYTECODE=1;COLLOIDFOAM_KERNEL=cellPoint")
 
 # twoWay.badInput.*: bad two-way settings stop the solver before anything
 #   is written, naming file, keyword and what is allowed.

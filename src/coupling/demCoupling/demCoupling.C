@@ -185,10 +185,43 @@ void Foam::demCoupling::startDEM()
             engine_.clear();
             openDEM(logFile, screenFile, demRank, demGrid_);
 
-            // What it made of them (a script with its own processors
-            // command overrides the grid asked)
+            // A script whose processors command has only '*' (one with
+            // numbers is kept, chooseDEMDecomposition) overrides the grid
+            // asked: the ranks matched to the subdomains it made instead
+            // (the same command is asked on resuming, so the same grid)
             int grid[3];
             engine_->processorGrid(grid);
+            if
+            (
+                demGrid_[0] > 0
+             && (grid[0] != demGrid_[0] || grid[1] != demGrid_[1]
+              || grid[2] != demGrid_[2])
+            )
+            {
+                WarningInFunction
+                    << "LIGGGHTS was asked for a grid of " << demGrid_
+                    << " subdomains and made " << grid[0] << ' ' << grid[1]
+                    << ' ' << grid[2] << ": the DEM script "
+                    << props_.demScript() << " has a processors command of"
+                    << " its own; its ranks are matched to those subdomains"
+                    << endl;
+                const label madeRank = matchMadeSubdomains();
+                if
+                (
+                    returnReduce
+                    (
+                        madeRank != engine_->rank(), orOp<bool>()
+                    )
+                )
+                {
+                    Info<< "Opening LIGGGHTS again with its ranks in that"
+                        << " order" << endl;
+                    engine_.clear();
+                    openDEM(logFile, screenFile, madeRank, demGrid_);
+                }
+            }
+
+            // What it made of them
             double lo[3], hi[3];
             engine_->subBox(lo, hi);
             List<boundBox> boxes(Pstream::nProcs());
@@ -210,21 +243,6 @@ void Foam::demCoupling::startDEM()
                 << ' ' << grid[2] << ", " << 100*same/max(total, VSMALL)
                 << " % of the fluid volume in the DEM box on the rank of its"
                 << " DEM subdomain" << endl;
-            if
-            (
-                demGrid_[0] > 0
-             && (grid[0] != demGrid_[0] || grid[1] != demGrid_[1]
-              || grid[2] != demGrid_[2])
-            )
-            {
-                WarningInFunction
-                    << "LIGGGHTS was asked for a grid of " << demGrid_
-                    << " subdomains and made " << grid[0] << ' ' << grid[1]
-                    << ' ' << grid[2] << ": the DEM script "
-                    << props_.demScript() << " has a processors command of"
-                    << " its own; more particles' records then go to"
-                    << " other ranks" << endl;
-            }
         }
     }
     liggghtsEngine& dem = engine_();
@@ -528,6 +546,18 @@ Foam::label Foam::demCoupling::chooseDEMDecomposition()
     }
     Info<< endl;
 
+    // A DEM script whose processors command gives numbers keeps its grid
+    // (a command asked before the script would be overridden by it)
+    int asked[3];
+    engine_->askedProcessorGrid(asked);
+    if (asked[0] || asked[1] || asked[2])
+    {
+        Info<< "DEM subdomains: the DEM script " << props_.demScript()
+            << " asks for a grid of " << asked[0] << ' ' << asked[1] << ' '
+            << asked[2] << " (0: any): kept" << endl;
+        return demRank;
+    }
+
     // Every other grid of equal subdomains of the box (LIGGGHTS splits it
     // evenly unless told otherwise), its subdomain (i, j, k) on LIGGGHTS
     // rank i + Px (j + Py k) ('map xyz'), each matched to a fluid rank
@@ -593,6 +623,38 @@ Foam::label Foam::demCoupling::chooseDEMDecomposition()
     }
 
     return demRank;
+}
+
+
+Foam::label Foam::demCoupling::matchMadeSubdomains() const
+{
+    const label nProcs = Pstream::nProcs();
+    const label me = Pstream::myProcNo();
+
+    // Each rank's subdomain [m] and its rank in LIGGGHTS
+    double lo[3], hi[3];
+    engine_->subBox(lo, hi);
+    List<boundBox> boxes(nProcs);
+    boxes[me] = boundBox
+    (
+        demUnits::length*point(lo[0], lo[1], lo[2]),
+        demUnits::length*point(hi[0], hi[1], hi[2])
+    );
+    labelList demRanks(nProcs);
+    demRanks[me] = engine_->rank();
+    Pstream::gatherList(boxes);
+    Pstream::scatterList(boxes);
+    Pstream::gatherList(demRanks);
+    Pstream::scatterList(demRanks);
+
+    // The subdomains by LIGGGHTS rank, each matched to a fluid rank
+    List<boundBox> byDemRank(nProcs);
+    forAll(boxes, w)
+    {
+        byDemRank[demRanks[w]] = boxes[w];
+    }
+    scalar matched = 0;
+    return matchBoxes(fluidInBoxes(byDemRank), matched)[me];
 }
 
 

@@ -111,8 +111,9 @@ Foam::demRestart::demRestart(const fvMesh& mesh)
 
         // This rank's rank in LIGGGHTS in the written run: the number of
         // its own restart file (LIGGGHTS' ranks may be in another order
-        // than the fluid's, demCoupling::matchDEMRanks).  (Not in the
-        // marker: a dictionary in uniform/ is read on the master only.)
+        // than the fluid's, demCoupling::chooseDEMDecomposition).  (Not in
+        // the marker: a dictionary in uniform/ is read on the master
+        // only.)
         label nNumbered = 0;
         for (const fileName& f : readDir(files.path(), fileName::FILE))
         {

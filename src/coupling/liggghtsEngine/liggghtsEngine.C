@@ -473,6 +473,16 @@ void Foam::liggghtsEngine::processorGrid(int grid[3]) const
 }
 
 
+void Foam::liggghtsEngine::askedProcessorGrid(int grid[3]) const
+{
+    const LAMMPS_NS::Comm* comm = engine(lmp_)->comm;
+    for (int k = 0; k < 3; ++k)
+    {
+        grid[k] = comm->user_procgrid[k];
+    }
+}
+
+
 int Foam::liggghtsEngine::dimension() const
 {
     return engine(lmp_)->domain->dimension;

@@ -21,8 +21,8 @@ one step early, a particle's position differed by 5e-3 d.
 With a velocity tolerance (two-way runs): the fluid resumes from its
 written fields (15 digits), so velocities differ from the uninterrupted
 run's in their last digits; then every particle's velocity must be within
-that fraction of the reference's largest speed (and its position within
-1e-3 d) instead of 95 % identical to every digit.
+that fraction of the reference's largest velocity component (and its
+position within 1e-3 d) instead of 95 % identical to every digit.
 
 usage: compareClouds.py referenceTimeDir resumedTimeDir [velocityTolerance]
 """
@@ -65,8 +65,8 @@ def main():
     if len(sys.argv) > 3:
         vmax = max(max(abs(a) for a in u) for _, _, u, _ in pairs)
         tol = float(sys.argv[3])
-        print('largest velocity difference %.3g of the largest speed %.3g m/s'
-              ' (at most %g)' % (dv/vmax, vmax, tol))
+        print('largest velocity difference %.3g m/s, largest velocity'
+              ' component %.3g m/s (at most %g of it)' % (dv, vmax, tol))
         if dv > tol*vmax:
             print('FAIL: velocities differ')
             ok = False

@@ -9,7 +9,8 @@
 #   runRankMatchingTest.sh fixtureDir workDir
 #
 # Asserted:
-#   - the log reports the reorder and opens LIGGGHTS again;
+#   - the log reports the reorder and opens LIGGGHTS again; the DEM
+#     script's own grid (processors * * 1) is kept: no other grid is tried;
 #   - the share of particles whose records go to another rank (the log's
 #     Records line) is at most 53 %: of the two ways to pair two DEM
 #     subdomains with two fluid parts, one puts at least half of the fluid
@@ -72,6 +73,9 @@ m = re.search(r"DEM subdomains and fluid parts: (\S+) % of the fluid volume in t
 if not m or 'Opening LIGGGHTS again with these subdomains' not in log:
     sys.exit('FAIL: no reorder of the DEM ranks in the log')
 own, matched = float(m.group(1)), float(m.group(2))
+if not re.search(r"DEM subdomains: the DEM script .* asks for a grid of 0 0 1 \(0: any\): kept", log) \
+        or 'DEM subdomains: a grid of' in log:
+    sys.exit('FAIL: the DEM script\'s processors grid (* * 1) was not kept')
 records = [float(x) for x in re.findall(r'Records: (\S+) % of the particles', log)]
 if not records:
     sys.exit('FAIL: no Records line')
