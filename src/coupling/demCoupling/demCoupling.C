@@ -222,17 +222,7 @@ void Foam::demCoupling::startDEM()
             }
 
             // What it made of them
-            double lo[3], hi[3];
-            engine_->subBox(lo, hi);
-            List<boundBox> boxes(Pstream::nProcs());
-            boxes[Pstream::myProcNo()] = boundBox
-            (
-                demUnits::length*point(lo[0], lo[1], lo[2]),
-                demUnits::length*point(hi[0], hi[1], hi[2])
-            );
-            Pstream::gatherList(boxes);
-            Pstream::scatterList(boxes);
-            const List<scalarList> overlap = fluidInBoxes(boxes);
+            const List<scalarList> overlap = fluidInBoxes(demSubdomains());
             scalar total = 0, same = 0;
             forAll(overlap, f)
             {
@@ -428,6 +418,22 @@ void Foam::demCoupling::openDEM
 }
 
 
+Foam::List<Foam::boundBox> Foam::demCoupling::demSubdomains() const
+{
+    double lo[3], hi[3];
+    engine_->subBox(lo, hi);
+    List<boundBox> boxes(Pstream::nProcs());
+    boxes[Pstream::myProcNo()] = boundBox
+    (
+        demUnits::length*point(lo[0], lo[1], lo[2]),
+        demUnits::length*point(hi[0], hi[1], hi[2])
+    );
+    Pstream::gatherList(boxes);
+    Pstream::scatterList(boxes);
+    return boxes;
+}
+
+
 Foam::List<Foam::scalarList> Foam::demCoupling::fluidInBoxes
 (
     const List<boundBox>& boxes
@@ -505,19 +511,8 @@ Foam::label Foam::demCoupling::chooseDEMDecomposition()
     const label nProcs = Pstream::nProcs();
     const label me = Pstream::myProcNo();
 
-    // LIGGGHTS' own subdomains, one per rank (boxes, not particles) [m]
-    double lo[3], hi[3];
-    engine_->subBox(lo, hi);
-    List<boundBox> boxes(nProcs);
-    boxes[me] = boundBox
-    (
-        demUnits::length*point(lo[0], lo[1], lo[2]),
-        demUnits::length*point(hi[0], hi[1], hi[2])
-    );
-    Pstream::gatherList(boxes);
-    Pstream::scatterList(boxes);
-
-    const List<scalarList> overlap = fluidInBoxes(boxes);
+    // LIGGGHTS' own subdomains, one per rank (boxes, not particles)
+    const List<scalarList> overlap = fluidInBoxes(demSubdomains());
     scalar matched = 0;
     const labelList boxOf = matchBoxes(overlap, matched);
     scalar total = 0, same = 0;
@@ -561,6 +556,7 @@ Foam::label Foam::demCoupling::chooseDEMDecomposition()
     // Every other grid of equal subdomains of the box (LIGGGHTS splits it
     // evenly unless told otherwise), its subdomain (i, j, k) on LIGGGHTS
     // rank i + Px (j + Py k) ('map xyz'), each matched to a fluid rank
+    double lo[3], hi[3];
     bool periodic[3];
     engine_->box(lo, hi, periodic);
     const point boxLo = demUnits::length*point(lo[0], lo[1], lo[2]);
@@ -631,19 +627,10 @@ Foam::label Foam::demCoupling::matchMadeSubdomains() const
     const label nProcs = Pstream::nProcs();
     const label me = Pstream::myProcNo();
 
-    // Each rank's subdomain [m] and its rank in LIGGGHTS
-    double lo[3], hi[3];
-    engine_->subBox(lo, hi);
-    List<boundBox> boxes(nProcs);
-    boxes[me] = boundBox
-    (
-        demUnits::length*point(lo[0], lo[1], lo[2]),
-        demUnits::length*point(hi[0], hi[1], hi[2])
-    );
+    // Each rank's subdomain and its rank in LIGGGHTS
+    const List<boundBox> boxes = demSubdomains();
     labelList demRanks(nProcs);
     demRanks[me] = engine_->rank();
-    Pstream::gatherList(boxes);
-    Pstream::scatterList(boxes);
     Pstream::gatherList(demRanks);
     Pstream::scatterList(demRanks);
 
