@@ -916,11 +916,13 @@ void Foam::demCoupling::gatherRecords
     scalarField& wallDist
 )
 {
+    clockTime clock;
     countNewParticles();
 
     pointField position;
     labelList cell;
     locateLocal(wallRange, position, proc_, cell, wallDist);
+    stageSeconds_[locate] += clock.timeIncrement();
 
     liggghtsEngine& dem = engine_();
     const int n = dem.nLocal();
@@ -949,10 +951,12 @@ void Foam::demCoupling::gatherRecords
     records_.gather(proc_, cell, position, radius, mass, velocity, K, F);
     nRecordsGathered_ += n;
     nRecordsAway_ += records_.nSentAway();
+    stageSeconds_[records] += clock.timeIncrement();
 
     if (props_.twoWay())
     {
         depositRecords();
+        stageSeconds_[deposit] += clock.timeIncrement();
     }
 }
 
@@ -1074,7 +1078,8 @@ Foam::demCoupling::demCoupling
     particleSteps_(0),
     nRecordsGathered_(0),
     nRecordsAway_(0),
-    insertedSeconds_(0)
+    insertedSeconds_(0),
+    stageSeconds_(scalar(0))
 {
     checkTimeStep();
     checkForceModels();
@@ -1154,6 +1159,7 @@ Foam::demCoupling::demCoupling
         // of the run (Timing, Contact analysis) counts from here
         const scalar startupSeconds = clock.elapsedTime();
         couplingSeconds_ = 0;
+        stageSeconds_ = scalar(0);
         analysisSeconds_ = 0;
         writeAnalysisSeconds_ = 0;
         nAnalyses_ = 0;
@@ -1532,6 +1538,8 @@ void Foam::demCoupling::updateForces()
         scalar tauMin = GREAT;
         const List<FixedList<scalar, 7>> answer =
             fluidForces(records_, deposit_.get(), tauMin);
+        const scalar forcesSeconds = clock.timeIncrement();
+        stageSeconds_[forces] += forcesSeconds;
 
         // Back on the particles' ranks
         const label n = engine_().nLocal();
@@ -1551,7 +1559,9 @@ void Foam::demCoupling::updateForces()
             << returnReduce(locator_.nGlobalSearches(), sumOp<label>())
             << " global searches" << endl;
 
-        couplingSeconds_ += clock.timeIncrement();
+        const scalar backSeconds = clock.timeIncrement();
+        stageSeconds_[back] += backSeconds;
+        couplingSeconds_ += forcesSeconds + backSeconds;
     }
     catch (const std::exception& e)
     {
@@ -1795,6 +1805,31 @@ void Foam::demCoupling::write
                 << " s, coupling " << couplingSeconds_ << " s; "
                 << particleSteps_/total/Pstream::nProcs()
                 << " particle-steps per second per rank" << endl;
+        }
+        if (nCouplingSteps_ > 0)
+        {
+            // A stage that takes longer on the master than on the fastest
+            // rank is the master waiting there for the others (collective:
+            // the same count on every rank)
+            FixedList<scalar, nStages> fastest(stageSeconds_);
+            FixedList<scalar, nStages> slowest(stageSeconds_);
+            for (label i = 0; i < nStages; ++i)
+            {
+                reduce(fastest[i], minOp<scalar>());
+                reduce(slowest[i], maxOp<scalar>());
+            }
+            const char* names[nStages] =
+                {"locate", "records", "deposit", "forces", "back"};
+            Info<< "Coupling stages [s] (master, fastest, slowest rank): DEM "
+                << demSeconds_ << ' ' << returnReduce(demSeconds_, minOp<scalar>())
+                << ' ' << returnReduce(demSeconds_, maxOp<scalar>()) << ";";
+            for (label i = 0; i < nStages; ++i)
+            {
+                Info<< ' ' << names[i] << ' ' << stageSeconds_[i] << ' '
+                    << fastest[i] << ' ' << slowest[i]
+                    << (i + 1 < nStages ? "," : "");
+            }
+            Info<< endl;
         }
         if (Pstream::parRun())
         {

@@ -58,17 +58,20 @@ void Foam::particleExchange::exchange
     cell.setSize(nProcs);
     wallDist.setSize(nProcs);
 
+    // This rank's own queries are answered here, not sent to itself
+    // through the buffers (most particles stay on their rank)
+    const label me = Pstream::myProcNo();
+    answer(p[me], hint[me], maxWallDist[me], cell[me], wallDist[me]);
     if (!Pstream::parRun())
     {
-        answer(p[0], hint[0], maxWallDist[0], cell[0], wallDist[0]);
         return;
     }
 
-    // Queries out: only to ranks that have some
+    // Queries out: only to other ranks that have some
     PstreamBuffers queries(Pstream::commsTypes::nonBlocking);
     for (label proci = 0; proci < nProcs; ++proci)
     {
-        if (p[proci].size())
+        if (proci != me && p[proci].size())
         {
             UOPstream os(proci, queries);
             os << p[proci] << hint[proci] << maxWallDist[proci];
@@ -81,7 +84,7 @@ void Foam::particleExchange::exchange
     PstreamBuffers answers(Pstream::commsTypes::nonBlocking);
     for (label proci = 0; proci < nProcs; ++proci)
     {
-        if (querySizes[proci])
+        if (proci != me && querySizes[proci])
         {
             UIPstream is(proci, queries);
             List<point> qp(is);
@@ -101,7 +104,7 @@ void Foam::particleExchange::exchange
 
     for (label proci = 0; proci < nProcs; ++proci)
     {
-        if (answerSizes[proci])
+        if (proci != me && answerSizes[proci])
         {
             UIPstream is(proci, answers);
             is >> cell[proci] >> wallDist[proci];

@@ -44,24 +44,27 @@ void Foam::particleRecords::gather
     List<scalarField> r(nProcs), m(nProcs), K(nProcs);
     List<vectorField> v(nProcs), F(nProcs);
 
-    if (!Pstream::parRun())
+    // This rank's own block is copied, not sent to itself through the
+    // buffers (most records stay on their rank: on 2 ranks the round trip
+    // through the buffers cost as much as the rest of the exchange)
     {
-        const labelList& idx = sentIndex_[0];
-        p[0] = listPick(localPosition, idx);
-        c[0] = listPick(cellOnProc, idx);
-        r[0] = listPick(localRadius, idx);
-        m[0] = listPick(localMass, idx);
-        v[0] = listPick(localVelocity, idx);
-        K[0] = listPick(localDragCoeff, idx);
-        F[0] = listPick(localDragForce, idx);
+        const label me = Pstream::myProcNo();
+        const labelList& idx = sentIndex_[me];
+        p[me] = listPick(localPosition, idx);
+        c[me] = listPick(cellOnProc, idx);
+        r[me] = listPick(localRadius, idx);
+        m[me] = listPick(localMass, idx);
+        v[me] = listPick(localVelocity, idx);
+        K[me] = listPick(localDragCoeff, idx);
+        F[me] = listPick(localDragForce, idx);
     }
-    else
+    if (Pstream::parRun())
     {
         PstreamBuffers buffers(Pstream::commsTypes::nonBlocking);
         for (label proci = 0; proci < nProcs; ++proci)
         {
             const labelList& idx = sentIndex_[proci];
-            if (idx.size())
+            if (proci != Pstream::myProcNo() && idx.size())
             {
                 UOPstream os(proci, buffers);
                 os  << listPick(localPosition, idx) << listPick(cellOnProc, idx)
@@ -74,7 +77,7 @@ void Foam::particleRecords::gather
         buffers.finishedSends(sizes);
         for (label proci = 0; proci < nProcs; ++proci)
         {
-            if (sizes[proci])
+            if (proci != Pstream::myProcNo() && sizes[proci])
             {
                 UIPstream is(proci, buffers);
                 is >> p[proci] >> c[proci] >> r[proci] >> m[proci]
@@ -82,7 +85,6 @@ void Foam::particleRecords::gather
             }
         }
     }
-
     label n = 0;
     forAll(p, proci)
     {

@@ -9,33 +9,43 @@ void Foam::particleRecords::answer
 ) const
 {
     const label nProcs = Pstream::nProcs();
+    const label me = Pstream::myProcNo();
 
+    // This rank's own records are copied, not sent to itself through the
+    // buffers
+    label start = 0;
+    for (label proci = 0; proci < me; ++proci)
+    {
+        start += nFrom_[proci];
+    }
+    {
+        const labelList& idx = sentIndex_[me];
+        forAll(idx, k)
+        {
+            perLocalParticle[idx[k]] = perRecord[start + k];
+        }
+    }
     if (!Pstream::parRun())
     {
-        forAll(sentIndex_[0], k)
-        {
-            perLocalParticle[sentIndex_[0][k]] = perRecord[k];
-        }
         return;
     }
 
     PstreamBuffers buffers(Pstream::commsTypes::nonBlocking);
-    label start = 0;
+    start = 0;
     for (label proci = 0; proci < nProcs; ++proci)
     {
-        if (nFrom_[proci])
+        if (proci != me && nFrom_[proci])
         {
             UOPstream os(proci, buffers);
             os << SubList<Type>(perRecord, nFrom_[proci], start);
-            start += nFrom_[proci];
         }
+        start += nFrom_[proci];
     }
     labelList sizes;
     buffers.finishedSends(sizes);
-
     for (label proci = 0; proci < nProcs; ++proci)
     {
-        if (sizes[proci])
+        if (proci != me && sizes[proci])
         {
             UIPstream is(proci, buffers);
             const List<Type> values(is);
