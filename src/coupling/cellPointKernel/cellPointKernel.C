@@ -16,17 +16,15 @@ Foam::tmp<Foam::Field<Type>> Foam::cellPointKernel::pointValues
     const Field<Type>& cellValues
 ) const
 {
-    const labelListList& pointCells = mesh_.pointCells();
-    tmp<Field<Type>> tvalues(new Field<Type>(mesh_.nPoints(), Zero));
+    const label nPoints = mesh_.nPoints();
+    tmp<Field<Type>> tvalues(new Field<Type>(nPoints, Zero));
     Field<Type>& values = tvalues.ref();
-    forAll(pointCells, pointi)
+    for (label pointi = 0; pointi < nPoints; ++pointi)
     {
-        const labelList& cells = pointCells[pointi];
-        const scalarList& w = pointWeights_[pointi];
         Type sum(Zero);
-        forAll(cells, j)
+        for (label j = pointStart_[pointi]; j < pointStart_[pointi + 1]; ++j)
         {
-            sum += w[j]*cellValues[cells[j]];
+            sum += pointWeight_[j]*cellValues[pointCell_[j]];
         }
         values[pointi] = sum;
     }
@@ -47,15 +45,13 @@ void Foam::cellPointKernel::spreadPointTotals
     (
         mesh_, pointTotals, plusEqOp<Type>(), Type(Zero)
     );
-    const labelListList& pointCells = mesh_.pointCells();
-    forAll(pointCells, pointi)
+    const label nPoints = mesh_.nPoints();
+    for (label pointi = 0; pointi < nPoints; ++pointi)
     {
-        const labelList& cells = pointCells[pointi];
-        const scalarList& w = pointWeights_[pointi];
         const Type& total = pointTotals[pointi];
-        forAll(cells, j)
+        for (label j = pointStart_[pointi]; j < pointStart_[pointi + 1]; ++j)
         {
-            cellValues[cells[j]] += w[j]*total;
+            cellValues[pointCell_[j]] += pointWeight_[j]*total;
         }
     }
 }
@@ -96,7 +92,9 @@ Foam::cellPointKernel::cellPointKernel
 :
     mesh_(mesh),
     tets_(tets),
-    pointWeights_(mesh.nPoints())
+    pointStart_(mesh.nPoints() + 1, 0),
+    pointCell_(),
+    pointWeight_()
 {
     // Each cell around a point in proportion to its volume, normalised by
     // the sum over every copy of the point (other ranks, periodic images):
@@ -107,24 +105,30 @@ Foam::cellPointKernel::cellPointKernel
     // fraction -0.10 in the packed bed's polyDual test)
     const scalarField& V = mesh_.V();
     const labelListList& pointCells = mesh_.pointCells();
+    forAll(pointCells, pointi)
+    {
+        pointStart_[pointi + 1] = pointStart_[pointi] + pointCells[pointi].size();
+    }
+    pointCell_.setSize(pointStart_.last());
+    pointWeight_.setSize(pointStart_.last());
     scalarField total(mesh_.nPoints(), 0);
     forAll(pointCells, pointi)
     {
-        const labelList& cells = pointCells[pointi];
-        scalarList& w = pointWeights_[pointi];
-        w.setSize(cells.size());
-        forAll(cells, j)
+        label j = pointStart_[pointi];
+        for (const label celli : pointCells[pointi])
         {
-            w[j] = V[cells[j]];
-            total[pointi] += w[j];
+            pointCell_[j] = celli;
+            pointWeight_[j] = V[celli];
+            total[pointi] += V[celli];
+            ++j;
         }
     }
     syncTools::syncPointList(mesh_, total, plusEqOp<scalar>(), scalar(0));
-    forAll(pointWeights_, pointi)
+    forAll(pointCells, pointi)
     {
-        for (scalar& w : pointWeights_[pointi])
+        for (label j = pointStart_[pointi]; j < pointStart_[pointi + 1]; ++j)
         {
-            w /= total[pointi];
+            pointWeight_[j] /= total[pointi];
         }
     }
 }
@@ -152,27 +156,9 @@ void Foam::cellPointKernel::depositShares
     scalarField pointDragCoeff(nPoints, 0);
     vectorField pointDragForce(nPoints, Zero);
 
-    // The records in the order of their cells (a stable counting sort):
-    // the tet search reads each cell's tets once from memory, not once
-    // per record in the records' order (which costs a cache miss each)
-    labelList order(n);
-    {
-        labelList start(mesh_.nCells() + 1, 0);
-        for (const label celli : cell)
-        {
-            ++start[celli + 1];
-        }
-        for (label celli = 0; celli < mesh_.nCells(); ++celli)
-        {
-            start[celli + 1] += start[celli];
-        }
-        for (label k = 0; k < n; ++k)
-        {
-            order[start[cell[k]]++] = k;
-        }
-    }
-
-    for (const label k : order)
+    // The records come in the order of their cells (particleRecords): each
+    // cell's tets are read once from memory
+    for (label k = 0; k < n; ++k)
     {
         const label celli = cell[k];
         FixedList<label, 3>& tri = recordTri_[k];

@@ -99,19 +99,45 @@ void Foam::particleRecords::gather
     dragCoeff.setSize(n);
     dragForce.setSize(n);
 
-    label k = 0;
+    // In the order of their cells (a stable counting sort): the deposit,
+    // the sampling and the forces then read the records and the cells'
+    // data one after the other; in the received order each record's cell
+    // data was a cache miss, and so was each record read in cell order
+    label nCells = 0;
+    forAll(c, proci)
+    {
+        for (const label celli : c[proci])
+        {
+            nCells = max(nCells, celli + 1);
+        }
+    }
+    labelList next(nCells + 1, 0);
+    forAll(c, proci)
+    {
+        for (const label celli : c[proci])
+        {
+            ++next[celli + 1];
+        }
+    }
+    for (label celli = 0; celli < nCells; ++celli)
+    {
+        next[celli + 1] += next[celli];
+    }
+    recordOf_.setSize(n);
+    label j = 0;
     forAll(p, proci)
     {
-        forAll(p[proci], j)
+        forAll(p[proci], i)
         {
-            position[k] = p[proci][j];
-            cell[k] = c[proci][j];
-            radius[k] = r[proci][j];
-            mass[k] = m[proci][j];
-            velocity[k] = v[proci][j];
-            dragCoeff[k] = K[proci][j];
-            dragForce[k] = F[proci][j];
-            ++k;
+            const label k = next[c[proci][i]]++;
+            recordOf_[j++] = k;
+            position[k] = p[proci][i];
+            cell[k] = c[proci][i];
+            radius[k] = r[proci][i];
+            mass[k] = m[proci][i];
+            velocity[k] = v[proci][i];
+            dragCoeff[k] = K[proci][i];
+            dragForce[k] = F[proci][i];
         }
     }
 }

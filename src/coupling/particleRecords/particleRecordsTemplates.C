@@ -1,5 +1,6 @@
 #include "particleRecords.H"
 #include "PstreamBuffers.H"
+#include "UIndirectList.H"
 
 template<class Type>
 void Foam::particleRecords::answer
@@ -22,7 +23,7 @@ void Foam::particleRecords::answer
         const labelList& idx = sentIndex_[me];
         forAll(idx, k)
         {
-            perLocalParticle[idx[k]] = perRecord[start + k];
+            perLocalParticle[idx[k]] = perRecord[recordOf_[start + k]];
         }
     }
     if (!Pstream::parRun())
@@ -37,7 +38,11 @@ void Foam::particleRecords::answer
         if (proci != me && nFrom_[proci])
         {
             UOPstream os(proci, buffers);
-            os << SubList<Type>(perRecord, nFrom_[proci], start);
+            os << UIndirectList<Type>
+            (
+                perRecord,
+                SubList<label>(recordOf_, nFrom_[proci], start)
+            );
         }
         start += nFrom_[proci];
     }
