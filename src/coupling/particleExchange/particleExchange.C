@@ -36,12 +36,25 @@ void Foam::particleExchange::answer
 
     forAll(p, i)
     {
-        cell[i] = locator_.findCell(p[i], hint[i]);
-        wallDist[i] =
-            (cell[i] >= 0 && maxWallDist[i] > 0)
-          ? locator_.wallDistance(p[i], cell[i], maxWallDist[i])
-          : GREAT;
+        answerOne(p[i], hint[i], maxWallDist[i], cell[i], wallDist[i]);
     }
+}
+
+
+void Foam::particleExchange::answerOne
+(
+    const point& p,
+    const label hint,
+    const scalar maxWallDist,
+    label& cell,
+    scalar& wallDist
+) const
+{
+    cell = locator_.findCell(p, hint);
+    wallDist =
+        (cell >= 0 && maxWallDist > 0)
+      ? locator_.wallDistance(p, cell, maxWallDist)
+      : GREAT;
 }
 
 
@@ -172,7 +185,17 @@ void Foam::particleExchange::locate
                         }
                     }
                 }
-                if (target >= 0)
+                if (target == Pstream::myProcNo())
+                {
+                    // Most particles: answered here, no query list
+                    tried[i] = target;
+                    answerOne(p[i], hint, maxWallDist[i], cell[i], wallDist[i]);
+                    if (cell[i] >= 0)
+                    {
+                        proc[i] = target;
+                    }
+                }
+                else if (target >= 0)
                 {
                     tried[i] = target;
                     qp[target].append(p[i]);
@@ -212,6 +235,7 @@ void Foam::particleExchange::locate
         exchange(sendP, sendHint, sendMax, aCell, aWall);
 
         // Lowest rank wins where a point on a processor face is found twice
+        // (in the second round; in the first each particle asks one rank)
         for (label proci = 0; proci < nProcs; ++proci)
         {
             const labelList& idx = qIndex[proci];

@@ -44,20 +44,12 @@ void Foam::particleRecords::gather
     List<scalarField> r(nProcs), m(nProcs), K(nProcs);
     List<vectorField> v(nProcs), F(nProcs);
 
-    // This rank's own block is copied, not sent to itself through the
-    // buffers (most records stay on their rank: on 2 ranks the round trip
-    // through the buffers cost as much as the rest of the exchange)
-    {
-        const label me = Pstream::myProcNo();
-        const labelList& idx = sentIndex_[me];
-        p[me] = listPick(localPosition, idx);
-        c[me] = listPick(cellOnProc, idx);
-        r[me] = listPick(localRadius, idx);
-        m[me] = listPick(localMass, idx);
-        v[me] = listPick(localVelocity, idx);
-        K[me] = listPick(localDragCoeff, idx);
-        F[me] = listPick(localDragForce, idx);
-    }
+    // This rank's own block is read from the local lists below, not sent
+    // to itself through the buffers (most records stay on their rank: on
+    // 2 ranks the round trip through the buffers cost as much as the rest
+    // of the exchange)
+    const label me = Pstream::myProcNo();
+    const labelList& own = sentIndex_[me];
     if (Pstream::parRun())
     {
         PstreamBuffers buffers(Pstream::commsTypes::nonBlocking);
@@ -88,7 +80,7 @@ void Foam::particleRecords::gather
     label n = 0;
     forAll(p, proci)
     {
-        nFrom_[proci] = p[proci].size();
+        nFrom_[proci] = (proci == me) ? own.size() : p[proci].size();
         n += nFrom_[proci];
     }
     position.setSize(n);
@@ -104,6 +96,10 @@ void Foam::particleRecords::gather
     // data one after the other; in the received order each record's cell
     // data was a cache miss, and so was each record read in cell order
     label nCells = 0;
+    for (const label i : own)
+    {
+        nCells = max(nCells, cellOnProc[i] + 1);
+    }
     forAll(c, proci)
     {
         for (const label celli : c[proci])
@@ -112,6 +108,10 @@ void Foam::particleRecords::gather
         }
     }
     labelList next(nCells + 1, 0);
+    for (const label i : own)
+    {
+        ++next[cellOnProc[i] + 1];
+    }
     forAll(c, proci)
     {
         for (const label celli : c[proci])
@@ -123,21 +123,51 @@ void Foam::particleRecords::gather
     {
         next[celli + 1] += next[celli];
     }
+
+    // Each record to its place; recordOf_ in the order received (rank by
+    // rank, this rank's own block at its rank)
     recordOf_.setSize(n);
     label j = 0;
-    forAll(p, proci)
+    auto place = [&]
+    (
+        const point& pi, const label ci, const scalar ri, const scalar mi,
+        const vector& vi, const scalar Ki, const vector& Fi
+    )
     {
-        forAll(p[proci], i)
+        const label k = next[ci]++;
+        recordOf_[j++] = k;
+        position[k] = pi;
+        cell[k] = ci;
+        radius[k] = ri;
+        mass[k] = mi;
+        velocity[k] = vi;
+        dragCoeff[k] = Ki;
+        dragForce[k] = Fi;
+    };
+    for (label proci = 0; proci < nProcs; ++proci)
+    {
+        if (proci == me)
         {
-            const label k = next[c[proci][i]]++;
-            recordOf_[j++] = k;
-            position[k] = p[proci][i];
-            cell[k] = c[proci][i];
-            radius[k] = r[proci][i];
-            mass[k] = m[proci][i];
-            velocity[k] = v[proci][i];
-            dragCoeff[k] = K[proci][i];
-            dragForce[k] = F[proci][i];
+            for (const label i : own)
+            {
+                place
+                (
+                    localPosition[i], cellOnProc[i], localRadius[i],
+                    localMass[i], localVelocity[i], localDragCoeff[i],
+                    localDragForce[i]
+                );
+            }
+        }
+        else
+        {
+            forAll(p[proci], i)
+            {
+                place
+                (
+                    p[proci][i], c[proci][i], r[proci][i], m[proci][i],
+                    v[proci][i], K[proci][i], F[proci][i]
+                );
+            }
         }
     }
 }
