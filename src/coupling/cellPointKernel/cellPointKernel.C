@@ -92,9 +92,7 @@ Foam::cellPointKernel::cellPointKernel
 :
     mesh_(mesh),
     tets_(tets),
-    pointStart_(mesh.nPoints() + 1, 0),
-    pointCell_(),
-    pointWeight_()
+    pointStart_(mesh.nPoints() + 1, 0)
 {
     // Each cell around a point in proportion to its volume, normalised by
     // the sum over every copy of the point (other ranks, periodic images):
@@ -107,7 +105,8 @@ Foam::cellPointKernel::cellPointKernel
     const labelListList& pointCells = mesh_.pointCells();
     forAll(pointCells, pointi)
     {
-        pointStart_[pointi + 1] = pointStart_[pointi] + pointCells[pointi].size();
+        pointStart_[pointi + 1] =
+            pointStart_[pointi] + pointCells[pointi].size();
     }
     pointCell_.setSize(pointStart_.last());
     pointWeight_.setSize(pointStart_.last());
@@ -157,7 +156,8 @@ void Foam::cellPointKernel::depositShares
     vectorField pointDragForce(nPoints, Zero);
 
     // The records come in the order of their cells (particleRecords): each
-    // cell's tets are read once from memory
+    // cell's tets are read once from memory (any order gives the same
+    // shares, only slower)
     for (label k = 0; k < n; ++k)
     {
         const label celli = cell[k];

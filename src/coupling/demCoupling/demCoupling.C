@@ -922,7 +922,7 @@ void Foam::demCoupling::gatherRecords
     pointField position;
     labelList cell;
     locateLocal(wallRange, position, proc_, cell, wallDist);
-    stageSeconds_[locate] += clock.timeIncrement();
+    stageSeconds_[locateStage] += clock.timeIncrement();
 
     liggghtsEngine& dem = engine_();
     const int n = dem.nLocal();
@@ -951,12 +951,12 @@ void Foam::demCoupling::gatherRecords
     records_.gather(proc_, cell, position, radius, mass, velocity, K, F);
     nRecordsGathered_ += n;
     nRecordsAway_ += records_.nSentAway();
-    stageSeconds_[records] += clock.timeIncrement();
+    stageSeconds_[recordsStage] += clock.timeIncrement();
 
     if (props_.twoWay())
     {
         depositRecords();
-        stageSeconds_[deposit] += clock.timeIncrement();
+        stageSeconds_[depositStage] += clock.timeIncrement();
     }
 }
 
@@ -1539,7 +1539,7 @@ void Foam::demCoupling::updateForces()
         const List<FixedList<scalar, 7>> answer =
             fluidForces(records_, deposit_.get(), tauMin);
         const scalar forcesSeconds = clock.timeIncrement();
-        stageSeconds_[forces] += forcesSeconds;
+        stageSeconds_[forcesStage] += forcesSeconds;
 
         // Back on the particles' ranks
         const label n = engine_().nLocal();
@@ -1560,7 +1560,7 @@ void Foam::demCoupling::updateForces()
             << " global searches" << endl;
 
         const scalar backSeconds = clock.timeIncrement();
-        stageSeconds_[back] += backSeconds;
+        stageSeconds_[backStage] += backSeconds;
         couplingSeconds_ += forcesSeconds + backSeconds;
     }
     catch (const std::exception& e)
@@ -1811,23 +1811,27 @@ void Foam::demCoupling::write
             // A stage that takes longer on the master than on the fastest
             // rank is the master waiting there for the others (collective:
             // the same count on every rank)
-            FixedList<scalar, nStages> fastest(stageSeconds_);
-            FixedList<scalar, nStages> slowest(stageSeconds_);
+            FixedList<scalar, nStages + 1> fastest;
+            fastest[0] = demSeconds_;
             for (label i = 0; i < nStages; ++i)
+            {
+                fastest[i + 1] = stageSeconds_[i];
+            }
+            FixedList<scalar, nStages + 1> slowest(fastest);
+            const FixedList<scalar, nStages + 1> master(fastest);
+            for (label i = 0; i <= nStages; ++i)
             {
                 reduce(fastest[i], minOp<scalar>());
                 reduce(slowest[i], maxOp<scalar>());
             }
-            const char* names[nStages] =
-                {"locate", "records", "deposit", "forces", "back"};
-            Info<< "Coupling stages [s] (master, fastest, slowest rank): DEM "
-                << demSeconds_ << ' ' << returnReduce(demSeconds_, minOp<scalar>())
-                << ' ' << returnReduce(demSeconds_, maxOp<scalar>()) << ";";
-            for (label i = 0; i < nStages; ++i)
+            static const char* names[nStages + 1] =
+                {"DEM", "locate", "records", "deposit", "forces", "back"};
+            Info<< "Coupling stages [s] (master, fastest, slowest rank):";
+            for (label i = 0; i <= nStages; ++i)
             {
-                Info<< ' ' << names[i] << ' ' << stageSeconds_[i] << ' '
+                Info<< ' ' << names[i] << ' ' << master[i] << ' '
                     << fastest[i] << ' ' << slowest[i]
-                    << (i + 1 < nStages ? "," : "");
+                    << (i == 0 ? ";" : i < nStages ? "," : "");
             }
             Info<< endl;
         }

@@ -38,7 +38,7 @@ void Foam::particleRecords::gather
     nFrom_.setSize(nProcs);
     nFrom_ = 0;
 
-    // One block of records per source rank, concatenated in rank order
+    // The records received from the other ranks, one block per rank
     List<pointField> p(nProcs);
     List<labelList> c(nProcs);
     List<scalarField> r(nProcs), m(nProcs), K(nProcs);
@@ -56,7 +56,7 @@ void Foam::particleRecords::gather
         for (label proci = 0; proci < nProcs; ++proci)
         {
             const labelList& idx = sentIndex_[proci];
-            if (proci != Pstream::myProcNo() && idx.size())
+            if (proci != me && idx.size())
             {
                 UOPstream os(proci, buffers);
                 os  << listPick(localPosition, idx) << listPick(cellOnProc, idx)
@@ -69,7 +69,7 @@ void Foam::particleRecords::gather
         buffers.finishedSends(sizes);
         for (label proci = 0; proci < nProcs; ++proci)
         {
-            if (proci != Pstream::myProcNo() && sizes[proci])
+            if (proci != me && sizes[proci])
             {
                 UIPstream is(proci, buffers);
                 is >> p[proci] >> c[proci] >> r[proci] >> m[proci]
@@ -77,6 +77,7 @@ void Foam::particleRecords::gather
             }
         }
     }
+
     label n = 0;
     forAll(p, proci)
     {
