@@ -200,12 +200,19 @@ def main():
             2.0*len(forces)/n_particles,
             1e-9*sum(forces)/len(forces) if forces else 0.0)   # nN -> N
 
-    # End of filtration: the first write with 99 % of the particles in
-    # the cake
-    t_f = next((s[0] for s in series if s[1] >= 0.99), None)
-    finished = t_f is not None
+    # End of filtration: when 99 % of the particles are in the cake,
+    # linear in the cake fraction between the writes around it (the
+    # particles arrive at a nearly steady rate until the last: the
+    # filtrate's rate is steady), not the write interval's 50 us steps
+    k_f = next((k for k, s in enumerate(series) if s[1] >= 0.99), None)
+    finished = k_f is not None
     if not finished:
         t_f = series[-1][0]
+    elif k_f == 0:
+        t_f = series[0][0]
+    else:
+        (t0, c0), (t1, c1) = series[k_f - 1][:2], series[k_f][:2]
+        t_f = t0 + (0.99 - c0)/(c1 - c0)*(t1 - t0)
     v_f = at(t_f, t_q, vol)
 
     # Ruth's t/V = a V + b from 0.1 V_f to V_f
