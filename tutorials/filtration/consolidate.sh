@@ -10,12 +10,6 @@
 # log.consolidation, consolidation.csv, consolidation.png,
 # consolidation.txt.
 set -e
-parallel=false
-case "${1:-}" in
-    -parallel) parallel=true ;;
-    "") ;;
-    *) echo "usage: $0 [-parallel]" 1>&2; exit 1 ;;
-esac
 tutorial=$(cd "$(dirname "$0")" && pwd)
 value() { foamDictionary -entry "$2" -value "$1"; }
 
@@ -26,19 +20,8 @@ mu=$(value system/filtrationParameters mu)
 dt=$(value constant/couplingProperties DEM/timeStep)
 pressures=$(value system/filtrationParameters consolidationPressures | tr -d '()')
 
-plugin="$FOAM_USER_LIBBIN/libliggghtsColloid.so"
-if $parallel
-then
-    ranks=$(value system/decomposeParDict numberOfSubdomains)
-    launch=(mpirun -np "$ranks" -x LD_PRELOAD="$plugin" liggghts)
-    where="on $ranks ranks"
-else
-    launch=(env LD_PRELOAD="$plugin" liggghts)
-    where="serial"
-fi
-
-echo "Consolidation ($where): piston at $pistonY um, pressures $pressures Pa: log.consolidation"
-"${launch[@]}" \
+echo "Consolidation: piston at $pistonY um, pressures $pressures Pa: log.consolidation"
+LD_PRELOAD="$FOAM_USER_LIBBIN/libliggghtsColloid.so" liggghts \
     -in constant/DEM/in.consolidation -log log.consolidation -echo none \
     -var colloid_case "$PWD" \
     -var colloid_diameter "$(awk -v d="$d" 'BEGIN { printf "%.10g", d*1e6 }')" \
