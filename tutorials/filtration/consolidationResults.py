@@ -22,7 +22,7 @@ import math
 import os
 import sys
 
-from filtrationResults import eval_entry
+from filtrationResults import eval_entry, foam_entry
 
 AT_REST = 0.02          # piston force against pressure x area
 STEP_LIMIT = 2000000    # in.consolidation's limit per pressure
@@ -44,6 +44,15 @@ def main():
         rows.append(dict(p=p, force=force, height=height, steps=int(steps),
                          eps_s=solid/(area*height),
                          force_error=force/(p*area) - 1))
+    # Every pressure of the list reached, else the DEM stopped early (killed,
+    # or failed): no fit of a part
+    wanted = foam_entry(params, 'consolidationPressures').strip('()').split()
+    if len(rows) != len(wanted):
+        sys.exit('consolidationResults.py: %s holds %d of the %d pressures of'
+                 ' %s consolidationPressures: the consolidation did not finish'
+                 ' (see log.consolidation)'
+                 % (os.path.join(run, 'DEM', 'consolidation.dat'), len(rows),
+                    len(wanted), params))
     for r in rows:
         r['at_rest'] = abs(r['force_error']) <= AT_REST and r['steps'] < STEP_LIMIT
 
