@@ -72,3 +72,15 @@ set_tests_properties(case.filtration.consolidation PROPERTIES
     TIMEOUT 900 LABELS "case;filtration"
     FIXTURES_REQUIRED filtration_stable
     ENVIRONMENT PYTHONDONTWRITEBYTECODE=1)
+
+# filtration.consolidationIncomplete: consolidationResults.py on a
+#   consolidation that stopped after 2 of its 5 pressures exits non-zero,
+#   names DEM/consolidation.dat, the count and consolidationPressures, and
+#   writes none of its outputs; on all 5 it writes them.
+add_test(NAME case.filtration.consolidationIncomplete
+    COMMAND python3 ${filtrationDir}/checkConsolidationIncomplete.py
+            ${CMAKE_SOURCE_DIR}/tutorials/filtration
+            ${filtrationWork}/consolidationIncomplete)
+set_tests_properties(case.filtration.consolidationIncomplete PROPERTIES
+    TIMEOUT 60 LABELS "case;filtration"
+    ENVIRONMENT PYTHONDONTWRITEBYTECODE=1)

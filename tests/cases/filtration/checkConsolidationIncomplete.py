@@ -1,0 +1,79 @@
+"""A consolidation that stopped before its last pressure (killed, or the
+DEM failed) is an error of consolidationResults.py, not a fit of part of
+the pressures: the tutorial's parameters, a cake of one layer and a
+DEM/consolidation.dat holding 2 of the 5 pressures of
+consolidationPressures.  Expected: a non-zero exit, a message naming
+DEM/consolidation.dat, the count (2 of 5) and consolidationPressures, and
+none of consolidation.csv, .txt, .png written.  A complete file of the
+same rows and three more gives exit 0, consolidation.csv and .txt (the
+.png too where matplotlib is there), so the failure above is the check,
+not a broken fixture.
+
+usage: checkConsolidationIncomplete.py tutorialDir workDir
+"""
+import os
+import shutil
+import subprocess
+import sys
+
+OUTPUTS = ('consolidation.csv', 'consolidation.txt', 'consolidation.png')
+
+
+def make_run(tutorial, run, pressures):
+    shutil.rmtree(run, ignore_errors=True)
+    os.makedirs(os.path.join(run, 'system'))
+    os.makedirs(os.path.join(run, 'DEM'))
+    shutil.copy(os.path.join(tutorial, 'system', 'filtrationParameters'),
+                os.path.join(run, 'system'))
+    # 20 x 20 spheres of 5.8 um: one layer over the 116 um square
+    with open(os.path.join(run, 'DEM', 'cake.data'), 'w') as f:
+        f.write('one layer\n\n400 atoms\n1 atom types\n\n'
+                '0 116 xlo xhi\n0 40 ylo yhi\n0 116 zlo zhi\n\nAtoms\n\n')
+        for i in range(400):
+            f.write('%d 1 5.8 2.5 %g 2.9 %g\n'
+                    % (i + 1, 2.9 + 5.8*(i % 20), 2.9 + 5.8*(i//20)))
+    area = 116e-6**2
+    with open(os.path.join(run, 'DEM', 'consolidation.dat'), 'w') as f:
+        f.write('# p_target_Pa force_N piston_height_m steps\n')
+        for k, p in enumerate(pressures):
+            f.write('%g %g %g 30000\n' % (p, p*area, 6.0e-6 - 0.1e-6*k))
+
+
+def run_results(tutorial, run):
+    return subprocess.run(
+        [sys.executable, os.path.join(tutorial, 'consolidationResults.py'),
+         run], stdout=subprocess.PIPE, stderr=subprocess.STDOUT,
+        universal_newlines=True)
+
+
+def main():
+    tutorial, work = sys.argv[1], sys.argv[2]
+    ok = True
+
+    partial = os.path.join(work, 'partial')
+    make_run(tutorial, partial, [2e5, 4e5])
+    r = run_results(tutorial, partial)
+    print('2 of 5 pressures: exit %d, %s' % (r.returncode, r.stdout.strip()))
+    for text in ('DEM/consolidation.dat', 'holds 2 of the 5 pressures',
+                 'consolidationPressures'):
+        if text not in r.stdout:
+            print('  message lacks "%s"' % text)
+            ok = False
+    written = [o for o in OUTPUTS if os.path.exists(os.path.join(partial, o))]
+    print('  written: %s' % (', '.join(written) or 'nothing'))
+    ok &= r.returncode != 0 and not written
+
+    complete = os.path.join(work, 'complete')
+    make_run(tutorial, complete, [2e5, 4e5, 6e5, 8e5, 1e6])
+    r = run_results(tutorial, complete)
+    written = [o for o in OUTPUTS if os.path.exists(os.path.join(complete, o))]
+    print('5 of 5 pressures: exit %d, written: %s'
+          % (r.returncode, ', '.join(written)))
+    ok &= r.returncode == 0 and set(OUTPUTS[:2]) <= set(written)
+
+    print('PASS' if ok else 'FAIL')
+    return 0 if ok else 1
+
+
+if __name__ == '__main__':
+    sys.exit(main())
