@@ -12,6 +12,7 @@ not a broken fixture.
 usage: checkConsolidationIncomplete.py tutorialDir workDir
 """
 import os
+import re
 import shutil
 import subprocess
 import sys
@@ -23,16 +24,21 @@ def make_run(tutorial, run, pressures):
     shutil.rmtree(run, ignore_errors=True)
     os.makedirs(os.path.join(run, 'system'))
     os.makedirs(os.path.join(run, 'DEM'))
-    shutil.copy(os.path.join(tutorial, 'system', 'filtrationParameters'),
-                os.path.join(run, 'system'))
-    # 20 x 20 spheres of 5.8 um: one layer over the 116 um square
+    params = os.path.join(tutorial, 'system', 'filtrationParameters')
+    shutil.copy(params, os.path.join(run, 'system'))
+    # The case's width [um] (the one source); one layer of n x n spheres
+    # of 5.8 um over its square
+    width = float(re.search(r'^width\s+([0-9.eE+-]+);', open(params).read(),
+                            re.M).group(1))
+    n = int(width/5.8)
     with open(os.path.join(run, 'DEM', 'cake.data'), 'w') as f:
-        f.write('one layer\n\n400 atoms\n1 atom types\n\n'
-                '0 116 xlo xhi\n0 40 ylo yhi\n0 116 zlo zhi\n\nAtoms\n\n')
-        for i in range(400):
+        f.write('one layer\n\n%d atoms\n1 atom types\n\n'
+                '0 %g xlo xhi\n0 40 ylo yhi\n0 %g zlo zhi\n\nAtoms\n\n'
+                % (n*n, width, width))
+        for i in range(n*n):
             f.write('%d 1 5.8 2.5 %g 2.9 %g\n'
-                    % (i + 1, 2.9 + 5.8*(i % 20), 2.9 + 5.8*(i//20)))
-    area = 116e-6**2
+                    % (i + 1, 2.9 + 5.8*(i % n), 2.9 + 5.8*(i//n)))
+    area = (width*1e-6)**2
     with open(os.path.join(run, 'DEM', 'consolidation.dat'), 'w') as f:
         f.write('# p_target_Pa force_N piston_height_m steps\n')
         for k, p in enumerate(pressures):
