@@ -45,18 +45,18 @@ void registerVariant()
 }
 
 // every colloid cohesion variant (see cohesion_model_colloid.h) with one
-// normal and tangential model, rolling off, default surface
-template<int Normal, int Tangential>
+// normal, tangential and rolling model, default surface
+template<int Normal, int Tangential, int Rolling = ContactModels::ROLLING_OFF>
 void registerColloidCohesionVariants()
 {
     using namespace ContactModels;
-    registerVariant<Normal, Tangential, COHESION_COLLOID_VDW, ROLLING_OFF, SURFACE_DEFAULT>();
-    registerVariant<Normal, Tangential, COHESION_COLLOID_DL, ROLLING_OFF, SURFACE_DEFAULT>();
-    registerVariant<Normal, Tangential, COHESION_COLLOID_LUB, ROLLING_OFF, SURFACE_DEFAULT>();
-    registerVariant<Normal, Tangential, COHESION_COLLOID_VDW_DL, ROLLING_OFF, SURFACE_DEFAULT>();
-    registerVariant<Normal, Tangential, COHESION_COLLOID_VDW_LUB, ROLLING_OFF, SURFACE_DEFAULT>();
-    registerVariant<Normal, Tangential, COHESION_COLLOID_DL_LUB, ROLLING_OFF, SURFACE_DEFAULT>();
-    registerVariant<Normal, Tangential, COHESION_COLLOID_VDW_DL_LUB, ROLLING_OFF, SURFACE_DEFAULT>();
+    registerVariant<Normal, Tangential, COHESION_COLLOID_VDW, Rolling, SURFACE_DEFAULT>();
+    registerVariant<Normal, Tangential, COHESION_COLLOID_DL, Rolling, SURFACE_DEFAULT>();
+    registerVariant<Normal, Tangential, COHESION_COLLOID_LUB, Rolling, SURFACE_DEFAULT>();
+    registerVariant<Normal, Tangential, COHESION_COLLOID_VDW_DL, Rolling, SURFACE_DEFAULT>();
+    registerVariant<Normal, Tangential, COHESION_COLLOID_VDW_LUB, Rolling, SURFACE_DEFAULT>();
+    registerVariant<Normal, Tangential, COHESION_COLLOID_DL_LUB, Rolling, SURFACE_DEFAULT>();
+    registerVariant<Normal, Tangential, COHESION_COLLOID_VDW_DL_LUB, Rolling, SURFACE_DEFAULT>();
 }
 
 // one per normal model, each in its own translation unit (compile time)

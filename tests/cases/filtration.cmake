@@ -71,6 +71,19 @@ add_test(NAME case.filtration.consolidation
 set_tests_properties(case.filtration.consolidation PROPERTIES
     TIMEOUT 900 LABELS "case;filtration"
     FIXTURES_REQUIRED filtration_stable
+    FIXTURES_SETUP filtration_consolidation
+    ENVIRONMENT PYTHONDONTWRITEBYTECODE=1)
+
+# The same cake consolidated on 2 ranks (METIS's rank count of the case,
+# LIGGGHTS' subdomains side by side): checks as above, and the packing
+# densities as the serial consolidation's
+add_test(NAME case.filtration.consolidationParallel
+    COMMAND ${filtrationDir}/runConsolidationTest.sh
+            ${filtrationWork}/stable/runs/stable ${filtrationWork}/consolidation_parallel
+            -parallel ${filtrationWork}/consolidation)
+set_tests_properties(case.filtration.consolidationParallel PROPERTIES
+    TIMEOUT 900 LABELS "case;filtration" PROCESSORS 2
+    FIXTURES_REQUIRED "filtration_stable;filtration_consolidation"
     ENVIRONMENT PYTHONDONTWRITEBYTECODE=1)
 
 # filtration.consolidationIncomplete: consolidationResults.py on a
@@ -83,4 +96,12 @@ add_test(NAME case.filtration.consolidationIncomplete
             ${filtrationWork}/consolidationIncomplete)
 set_tests_properties(case.filtration.consolidationIncomplete PROPERTIES
     TIMEOUT 60 LABELS "case;filtration"
+    ENVIRONMENT PYTHONDONTWRITEBYTECODE=1)
+
+add_test(NAME case.filtration.rollingFrictionInput
+    COMMAND ${filtrationDir}/runRollingFrictionInputTest.sh
+            ${filtrationWork}/rollingFrictionInput)
+set_tests_properties(case.filtration.rollingFrictionInput PROPERTIES
+    TIMEOUT 120 LABELS "case;filtration"
+    PASS_REGULAR_EXPRESSION "rollingFriction input: all checks passed"
     ENVIRONMENT PYTHONDONTWRITEBYTECODE=1)

@@ -25,7 +25,6 @@ import sys
 from filtrationResults import eval_entry, foam_entry
 
 AT_REST = 0.02          # piston force against pressure x area
-STEP_LIMIT = 2000000    # in.consolidation's limit per pressure
 
 
 def main():
@@ -53,8 +52,9 @@ def main():
                  ' (see log.consolidation)'
                  % (os.path.join(run, 'DEM', 'consolidation.dat'), len(rows),
                     len(wanted), params))
+    step_limit = eval_entry(params, 'consolidationStepLimit')
     for r in rows:
-        r['at_rest'] = abs(r['force_error']) <= AT_REST and r['steps'] < STEP_LIMIT
+        r['at_rest'] = abs(r['force_error']) <= AT_REST and r['steps'] < step_limit
 
     # eq. 14: for each p0 a straight line ln eps_s = ln eps_s0 + beta x
     def line_fit(p0):

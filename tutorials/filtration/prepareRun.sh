@@ -49,6 +49,12 @@ do
 done
 checkParameter $params solidsFraction 0 0.64
 checkParameter $params poissonsRatio -1 0.5
+# 0 (none) is allowed, so not checkParameter's open range
+rollingFriction=$(param rollingFriction)
+awk -v v="$rollingFriction" 'BEGIN {
+    exit !(v ~ /^[-+]?([0-9]+\.?[0-9]*|\.[0-9]+)([eE][-+]?[0-9]+)?$/ && v + 0 >= 0 && v + 0 < 1) }' \
+    || { echo "$params: keyword 'rollingFriction' is $rollingFriction;" \
+        "allowed range: 0 <= rollingFriction < 1" 1>&2; exit 1; }
 
 # The DEM's values in its units (um, nN/um^2 = 1e3 Pa, fJ)
 width=$(param width); height=$(param slurryHeight)
@@ -61,7 +67,7 @@ dt=$(foamDictionary -entry DEM/timeStep -value constant/couplingProperties)
 nc=$(foamDictionary -entry DEM/couplingInterval -value constant/couplingProperties)
 nw=$(foamDictionary -entry writeInterval -value system/controlDict)
 awk -v L="$width" -v H="$height" -v E="$E" -v nu="$nu" -v e="$e" \
-    -v mu="$mu" -v A="$A" -v zeta="$zeta" -v salt="$salt" \
+    -v mu="$mu" -v mur="$rollingFriction" -v A="$A" -v zeta="$zeta" -v salt="$salt" \
     -v variant="$(param variant)" -v writeSteps=$((nc*nw)) '
 BEGIN {
     print "# Written by prepareRun.sh from system/filtrationParameters (units micro)"
@@ -72,6 +78,8 @@ BEGIN {
     printf "variable poissonsRatio equal %.10g\n", nu
     printf "variable restitution equal %.10g\n", e
     printf "variable friction equal %.10g\n", mu
+    printf "variable rollingFriction equal %.10g\n", mur
+    printf "variable rollingModel string %s\n", (mur > 0 ? "epsd2" : "off")
     printf "variable hamakerConstant equal %.10g\n", A*1e15
     printf "variable zetaPotential equal %.10g\n", zeta
     printf "variable saltConcentration equal %.10g\n", salt

@@ -1,0 +1,16 @@
+# Rolling resistance (LIGGGHTS' epsd2) with the plugin's van der Waals
+# cohesion, against rigid-body mechanics of a sphere on a wall:
+# rollingResistanceTest.cpp
+add_executable(rollingResistanceTests
+    ${CMAKE_CURRENT_LIST_DIR}/liggghtsRun.cpp
+    ${CMAKE_CURRENT_LIST_DIR}/rollingResistanceTest.cpp)
+target_include_directories(rollingResistanceTests PRIVATE ${LIGGGHTS_INCLUDE_DIR})
+target_link_libraries(rollingResistanceTests PRIVATE liggghtsColloid GTest::gtest GTest::gtest_main)
+
+foreach(name rollingResistanceHoldsAdheredSphere rollingResistanceSlowsRollingSphere)
+    add_test(NAME dem.${name} COMMAND rollingResistanceTests --gtest_filter=*.${name})
+    set_tests_properties(dem.${name} PROPERTIES
+        TIMEOUT 60 LABELS "dem;filtration"
+        PASS_REGULAR_EXPRESSION "\\[  PASSED  \\] 1 test\\."
+        WORKING_DIRECTORY ${CMAKE_CURRENT_BINARY_DIR})
+endforeach()
