@@ -7,10 +7,15 @@ DEM/consolidation.dat, the count (2 of 5) and consolidationPressures, and
 none of consolidation.csv, .txt, .png written.  A complete file of the
 same rows and three more gives exit 0, consolidation.csv and .txt (the
 .png too where matplotlib is there), so the failure above is the check,
-not a broken fixture.
+not a broken fixture; every pressure at rest there.  The same complete
+file with the third pressure stopped on the step limit (its steps equal
+to consolidationStepLimit of the case): that pressure, and no other, is
+not at rest in consolidation.csv, and consolidation.txt says all_at_rest
+no.
 
 usage: checkConsolidationIncomplete.py tutorialDir workDir
 """
+import csv
 import os
 import re
 import shutil
@@ -20,7 +25,7 @@ import sys
 OUTPUTS = ('consolidation.csv', 'consolidation.txt', 'consolidation.png')
 
 
-def make_run(tutorial, run, pressures):
+def make_run(tutorial, run, pressures, steps=None):
     shutil.rmtree(run, ignore_errors=True)
     os.makedirs(os.path.join(run, 'system'))
     os.makedirs(os.path.join(run, 'DEM'))
@@ -42,7 +47,17 @@ def make_run(tutorial, run, pressures):
     with open(os.path.join(run, 'DEM', 'consolidation.dat'), 'w') as f:
         f.write('# p_target_Pa force_N piston_height_m steps\n')
         for k, p in enumerate(pressures):
-            f.write('%g %g %g 30000\n' % (p, p*area, 6.0e-6 - 0.1e-6*k))
+            f.write('%g %g %g %d\n' % (p, p*area, 6.0e-6 - 0.1e-6*k,
+                                      steps[k] if steps else 30000))
+
+
+def at_rest(run):
+    """The at_rest column of a run's consolidation.csv ([] without one)."""
+    path = os.path.join(run, 'consolidation.csv')
+    if not os.path.exists(path):
+        return []
+    with open(path) as f:
+        return [row['at_rest'] for row in csv.DictReader(f)]
 
 
 def run_results(tutorial, run):
@@ -76,6 +91,25 @@ def main():
     print('5 of 5 pressures: exit %d, written: %s'
           % (r.returncode, ', '.join(written)))
     ok &= r.returncode == 0 and set(OUTPUTS[:2]) <= set(written)
+    rest = at_rest(complete)
+    print('  at rest: %s' % ' '.join(rest))
+    ok &= rest == ['yes']*5
+
+    limit = int(float(re.search(
+        r'^consolidationStepLimit\s+([0-9.eE+-]+);',
+        open(os.path.join(tutorial, 'system', 'filtrationParameters')).read(),
+        re.M).group(1)))
+    limited = os.path.join(work, 'limited')
+    make_run(tutorial, limited, [2e5, 4e5, 6e5, 8e5, 1e6],
+             [30000, 30000, limit, 30000, 30000])
+    r = run_results(tutorial, limited)
+    rest = at_rest(limited)
+    summary = open(os.path.join(limited, 'consolidation.txt')).read() \
+        if r.returncode == 0 else ''
+    print('third pressure on the step limit (%d steps): exit %d, at rest: %s'
+          % (limit, r.returncode, ' '.join(rest)))
+    ok &= (r.returncode == 0 and rest == ['yes', 'yes', 'no', 'yes', 'yes']
+           and re.search(r'^all_at_rest\s+no$', summary, re.M) is not None)
 
     print('PASS' if ok else 'FAIL')
     return 0 if ok else 1
