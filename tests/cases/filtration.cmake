@@ -105,3 +105,11 @@ set_tests_properties(case.filtration.rollingFrictionInput PROPERTIES
     TIMEOUT 120 LABELS "case;filtration"
     PASS_REGULAR_EXPRESSION "rollingFriction input: all checks passed"
     ENVIRONMENT PYTHONDONTWRITEBYTECODE=1)
+
+add_test(NAME case.filtration.consolidationFit
+    COMMAND python3 ${filtrationDir}/checkConsolidationFit.py
+            ${CMAKE_SOURCE_DIR}/tutorials/filtration
+            ${filtrationWork}/consolidationFit)
+set_tests_properties(case.filtration.consolidationFit PROPERTIES
+    TIMEOUT 60 LABELS "case;filtration"
+    ENVIRONMENT PYTHONDONTWRITEBYTECODE=1)

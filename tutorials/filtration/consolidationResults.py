@@ -6,7 +6,9 @@ piston pressure, and seed 002's compression function (eq. 14)
 
 fitted to them (p0 by a search over six decades, eps_s0 and beta by
 least squares on ln eps_s against ln(1 + p/p0) for each p0; beta is the
-compressibility index).
+compressibility index), and again with p0 held at consolidationCommonP0
+of system/filtrationParameters (one p0 for both variants, so that their
+beta compare).
 
 Packing density: the particles' volume over the cross-section times the
 piston's height above the medium (the cake's rough top included, as the
@@ -71,6 +73,11 @@ def main():
     best = min((line_fit(10**(3 + 6*k/600.0)) + (10**(3 + 6*k/600.0),)
                 for k in range(601)), key=lambda f: f[0])
     ss, beta, a, p0 = best
+    p0_common = eval_entry(params, 'consolidationCommonP0')
+    if not p0_common > 0:
+        sys.exit('consolidationResults.py: %s consolidationCommonP0 is %g;'
+                 ' allowed range: > 0 Pa' % (params, p0_common))
+    _, beta_common, a_common = line_fit(p0_common)
     ys = [math.log(r['eps_s']) for r in rows]
     my = sum(ys)/len(ys)
     r2 = 1 - ss/sum((y - my)**2 for y in ys) if len(ys) > 2 else float('nan')
@@ -89,7 +96,10 @@ def main():
                ('eps_s0', '%.4f' % math.exp(a)),
                ('p0_Pa', '%.4g' % p0),
                ('compressibility_index', '%.4f' % beta),
-               ('fit_r2', '%.4f' % r2)]
+               ('fit_r2', '%.4f' % r2),
+               ('common_p0_Pa', '%.4g' % p0_common),
+               ('eps_s0_at_common_p0', '%.4f' % math.exp(a_common)),
+               ('compressibility_index_at_common_p0', '%.4f' % beta_common)]
     with open(os.path.join(run, 'consolidation.txt'), 'w') as f:
         for k, v in results:
             f.write('%s %s\n' % (k, v))

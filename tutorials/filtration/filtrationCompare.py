@@ -81,11 +81,13 @@ def main():
         for label, key in (('compressibility index beta (eq. 14)',
                             'compressibility_index'),
                            ('p0 of eq. 14 [Pa]', 'p0_Pa'),
+                           ('beta at the common p0 (consolidationCommonP0)',
+                            'compressibility_index_at_common_p0'),
                            ('packing density at 200 ... 1000 kPa',
                             'packing_densities')):
             lines.append('| %s | - | - | %s | - | - | %s |' % (
-                label, cons['stable'][key].strip(),
-                cons['flocculated'][key].strip()))
+                label, cons['stable'].get(key, '-').strip(),
+                cons['flocculated'].get(key, '-').strip()))
     table = '\n'.join(lines) + '\n'
     with open('comparison.md', 'w') as f:
         f.write('Filtration at 200 kPa, glass spheres of 5.8 um at 13 %% solids:'

@@ -16,6 +16,7 @@ no.
 usage: checkConsolidationIncomplete.py tutorialDir workDir
 """
 import csv
+import math
 import os
 import re
 import shutil
@@ -25,7 +26,12 @@ import sys
 OUTPUTS = ('consolidation.csv', 'consolidation.txt', 'consolidation.png')
 
 
-def make_run(tutorial, run, pressures, steps=None):
+def make_run(tutorial, run, pressures, steps=None, heights=None):
+    """A run folder: the tutorial's filtrationParameters, a cake of one
+    layer, DEM/consolidation.dat with these pressures [Pa], steps and
+    piston heights [m] (defaults: 30000, and 6 um falling by 0.1 um a
+    step).  Returns the cake's solids volume [m^3] and cross-section
+    [m^2]."""
     shutil.rmtree(run, ignore_errors=True)
     os.makedirs(os.path.join(run, 'system'))
     os.makedirs(os.path.join(run, 'DEM'))
@@ -47,8 +53,10 @@ def make_run(tutorial, run, pressures, steps=None):
     with open(os.path.join(run, 'DEM', 'consolidation.dat'), 'w') as f:
         f.write('# p_target_Pa force_N piston_height_m steps\n')
         for k, p in enumerate(pressures):
-            f.write('%g %g %g %d\n' % (p, p*area, 6.0e-6 - 0.1e-6*k,
-                                      steps[k] if steps else 30000))
+            f.write('%.17g %.17g %.17g %d\n' % (
+                p, p*area, heights[k] if heights else 6.0e-6 - 0.1e-6*k,
+                steps[k] if steps else 30000))
+    return n*n*math.pi/6*(5.8e-6)**3, area
 
 
 def at_rest(run):
