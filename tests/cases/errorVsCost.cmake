@@ -44,6 +44,13 @@ foreach(variant shortLadder badLimit missingEntry variableEntry badExpression mi
         TIMEOUT 30 LABELS "case;errorVsCost" ENVIRONMENT PYTHONDONTWRITEBYTECODE=1)
 endforeach()
 
+# A rung that runs but prints a quantity that is not finite (nan): a failed
+# rung in the report, the study goes on (runStudyNotFinite.sh)
+add_test(NAME case.errorVsCost.notFiniteRung
+    COMMAND ${errorVsCostDir}/runStudyNotFinite.sh ${errorVsCostWork}/notFiniteRung)
+set_tests_properties(case.errorVsCost.notFiniteRung PROPERTIES
+    TIMEOUT 30 LABELS "case;errorVsCost" ENVIRONMENT PYTHONDONTWRITEBYTECODE=1)
+
 # errorVsCost.slotCoaterStudy: the slot-coater tutorial's own study
 #   (tutorials/slotCoater/system/errorStudyDict) at test size to 2 us, for
 #   the DEM step, coupling step, colloid range, cell size and flow
