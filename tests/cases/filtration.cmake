@@ -86,10 +86,23 @@ set_tests_properties(case.filtration.consolidationParallel PROPERTIES
     FIXTURES_REQUIRED "filtration_stable;filtration_consolidation"
     ENVIRONMENT PYTHONDONTWRITEBYTECODE=1)
 
+# The same cake consolidated with rolling resistance (rollingFriction 0.1,
+# LIGGGHTS' epsd2 with the stable variant's colloid model and at the
+# walls): checks as above, and looser than without it by at least 0.005
+add_test(NAME case.filtration.consolidationRolling
+    COMMAND ${filtrationDir}/runConsolidationTest.sh
+            ${filtrationWork}/stable/runs/stable ${filtrationWork}/consolidation_rolling
+            -rolling ${filtrationWork}/consolidation)
+set_tests_properties(case.filtration.consolidationRolling PROPERTIES
+    TIMEOUT 900 LABELS "case;filtration"
+    FIXTURES_REQUIRED "filtration_stable;filtration_consolidation"
+    ENVIRONMENT PYTHONDONTWRITEBYTECODE=1)
+
 # filtration.consolidationIncomplete: consolidationResults.py on a
 #   consolidation that stopped after 2 of its 5 pressures exits non-zero,
 #   names DEM/consolidation.dat, the count and consolidationPressures, and
-#   writes none of its outputs; on all 5 it writes them.
+#   writes none of its outputs; on all 5 it writes them; a pressure that
+#   stopped on the case's consolidationStepLimit is reported not at rest.
 add_test(NAME case.filtration.consolidationIncomplete
     COMMAND python3 ${filtrationDir}/checkConsolidationIncomplete.py
             ${CMAKE_SOURCE_DIR}/tutorials/filtration
