@@ -24,13 +24,17 @@ case "${1:-}" in
 esac
 value() { foamDictionary -entry "$2" -value "$1"; }
 
+# checked before anything is written or run (consolidationResults.py
+# reads them after the DEM's minutes)
+checkParameter system/filtrationParameters consolidationStepLimit 0 -
+checkParameter system/filtrationParameters consolidationCommonP0 0 -
+
 pistonY=$(python3 "$tutorial"/makeCake.py .)
 d=$(value system/filtrationParameters particleDiameter)
 rhop=$(value system/filtrationParameters particleDensity)
 mu=$(value system/filtrationParameters mu)
 dt=$(value constant/couplingProperties DEM/timeStep)
 pressures=$(value system/filtrationParameters consolidationPressures | tr -d '()')
-checkParameter system/filtrationParameters consolidationStepLimit 0 -
 stepLimit=$(value system/filtrationParameters consolidationStepLimit)
 
 echo "Consolidation: piston at $pistonY um, pressures $pressures Pa," \
