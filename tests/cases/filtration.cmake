@@ -74,42 +74,25 @@ set_tests_properties(case.filtration.consolidation PROPERTIES
     FIXTURES_SETUP filtration_consolidation
     ENVIRONMENT PYTHONDONTWRITEBYTECODE=1)
 
-# The same cake consolidated on 2 ranks (METIS's rank count of the case,
-# LIGGGHTS' subdomains side by side): checks as above, and the packing
-# densities as the serial consolidation's
-add_test(NAME case.filtration.consolidationParallel
-    COMMAND ${filtrationDir}/runConsolidationTest.sh
-            ${filtrationWork}/stable/runs/stable ${filtrationWork}/consolidation_parallel
-            -parallel ${filtrationWork}/consolidation)
-set_tests_properties(case.filtration.consolidationParallel PROPERTIES
-    TIMEOUT 900 LABELS "case;filtration" PROCESSORS 2
-    FIXTURES_REQUIRED "filtration_stable;filtration_consolidation"
-    ENVIRONMENT PYTHONDONTWRITEBYTECODE=1)
-
-# The same cake consolidated with rolling resistance (rollingFriction 0.1,
-# LIGGGHTS' epsd2 with the stable variant's colloid model and at the
-# walls): checks as above, and looser than without it by at least 0.005
-add_test(NAME case.filtration.consolidationRolling
-    COMMAND ${filtrationDir}/runConsolidationTest.sh
-            ${filtrationWork}/stable/runs/stable ${filtrationWork}/consolidation_rolling
-            -rolling ${filtrationWork}/consolidation)
-set_tests_properties(case.filtration.consolidationRolling PROPERTIES
-    TIMEOUT 900 LABELS "case;filtration"
-    FIXTURES_REQUIRED "filtration_stable;filtration_consolidation"
-    ENVIRONMENT PYTHONDONTWRITEBYTECODE=1)
-
-# filtration.consolidationIncomplete: consolidationResults.py on a
-#   consolidation that stopped after 2 of its 5 pressures exits non-zero,
-#   names DEM/consolidation.dat, the count and consolidationPressures, and
-#   writes none of its outputs; on all 5 it writes them; a pressure that
-#   stopped on the case's consolidationStepLimit is reported not at rest.
-add_test(NAME case.filtration.consolidationIncomplete
-    COMMAND python3 ${filtrationDir}/checkConsolidationIncomplete.py
-            ${CMAKE_SOURCE_DIR}/tutorials/filtration
-            ${filtrationWork}/consolidationIncomplete)
-set_tests_properties(case.filtration.consolidationIncomplete PROPERTIES
-    TIMEOUT 60 LABELS "case;filtration"
-    ENVIRONMENT PYTHONDONTWRITEBYTECODE=1)
+# The same cake consolidated again, against the serial consolidation:
+#   consolidationParallel: on 2 ranks (METIS's rank count of the case,
+#     LIGGGHTS' subdomains side by side), the packing densities as the
+#     serial ones (0.001);
+#   consolidationRolling: with rolling resistance (rollingFriction 0.1,
+#     LIGGGHTS' epsd2 with the stable variant's colloid model and at the
+#     walls), looser than without it by at least 0.005
+foreach(mode Parallel Rolling)
+    string(TOLOWER ${mode} flag)
+    add_test(NAME case.filtration.consolidation${mode}
+        COMMAND ${filtrationDir}/runConsolidationTest.sh
+                ${filtrationWork}/stable/runs/stable ${filtrationWork}/consolidation_${flag}
+                -${flag} ${filtrationWork}/consolidation)
+    set_tests_properties(case.filtration.consolidation${mode} PROPERTIES
+        TIMEOUT 900 LABELS "case;filtration"
+        FIXTURES_REQUIRED "filtration_stable;filtration_consolidation"
+        ENVIRONMENT PYTHONDONTWRITEBYTECODE=1)
+endforeach()
+set_tests_properties(case.filtration.consolidationParallel PROPERTIES PROCESSORS 2)
 
 add_test(NAME case.filtration.rollingFrictionInput
     COMMAND ${filtrationDir}/runRollingFrictionInputTest.sh
@@ -119,10 +102,20 @@ set_tests_properties(case.filtration.rollingFrictionInput PROPERTIES
     PASS_REGULAR_EXPRESSION "rollingFriction input: all checks passed"
     ENVIRONMENT PYTHONDONTWRITEBYTECODE=1)
 
-add_test(NAME case.filtration.consolidationFit
-    COMMAND python3 ${filtrationDir}/checkConsolidationFit.py
-            ${CMAKE_SOURCE_DIR}/tutorials/filtration
-            ${filtrationWork}/consolidationFit)
-set_tests_properties(case.filtration.consolidationFit PROPERTIES
-    TIMEOUT 60 LABELS "case;filtration"
-    ENVIRONMENT PYTHONDONTWRITEBYTECODE=1)
+# consolidationResults.py without a DEM run (checkConsolidation<check>.py):
+#   Incomplete: a consolidation that stopped after 2 of its 5 pressures
+#     exits non-zero, names DEM/consolidation.dat, the count and
+#     consolidationPressures, and writes none of its outputs; on all 5 it
+#     writes them; a pressure that stopped on the case's
+#     consolidationStepLimit is reported not at rest;
+#   Fit: eq. 14 fitted to its own densities, p0 free and held at
+#     consolidationCommonP0, and a bad p0
+foreach(check Incomplete Fit)
+    add_test(NAME case.filtration.consolidation${check}
+        COMMAND python3 ${filtrationDir}/checkConsolidation${check}.py
+                ${CMAKE_SOURCE_DIR}/tutorials/filtration
+                ${filtrationWork}/consolidation${check})
+    set_tests_properties(case.filtration.consolidation${check} PROPERTIES
+        TIMEOUT 60 LABELS "case;filtration"
+        ENVIRONMENT PYTHONDONTWRITEBYTECODE=1)
+endforeach()
