@@ -54,7 +54,7 @@ def time(path):
     return float(os.path.basename(path))
 
 
-def _values(path, width):
+def list_values(path, width):
     """The numbers of an OpenFOAM list file, width numbers per element
     (a missing file on a rank without particles: none)"""
     if not os.path.exists(path):
@@ -81,14 +81,14 @@ def read(path):
     """Particles of one write time (all ranks), sorted by id"""
     rows = []
     for d in _cloud_dirs(path):
-        pos = _values(os.path.join(d, "positions"), 4)   # (x y z) celli
-        ids = _values(os.path.join(d, "origId"), 1)
-        vel = _values(os.path.join(d, "U"), 3)
-        dia = _values(os.path.join(d, "d"), 1)
-        nc = _values(os.path.join(d, "nContacts"), 1)
-        tp = _values(os.path.join(d, "touchingParticle"), 1)
-        tw = _values(os.path.join(d, "touchingWall"), 1)
-        ag = _values(os.path.join(d, "agglomerateSize"), 1) or [[1]]*len(pos)
+        pos = list_values(os.path.join(d, "positions"), 4)   # (x y z) celli
+        ids = list_values(os.path.join(d, "origId"), 1)
+        vel = list_values(os.path.join(d, "U"), 3)
+        dia = list_values(os.path.join(d, "d"), 1)
+        nc = list_values(os.path.join(d, "nContacts"), 1)
+        tp = list_values(os.path.join(d, "touchingParticle"), 1)
+        tw = list_values(os.path.join(d, "touchingWall"), 1)
+        ag = list_values(os.path.join(d, "agglomerateSize"), 1) or [[1]]*len(pos)
         for k in range(len(pos)):
             rows.append((int(ids[k][0]), pos[k][:3], vel[k], 0.5*dia[k][0],
                          int(nc[k][0]), int(tp[k][0]), int(tw[k][0]), int(ag[k][0])))

@@ -191,3 +191,14 @@ add_test(NAME case.twoWay.viscousStress
     COMMAND ${twoWayDir}/runViscousStressTest.sh ${twoWayWork}/viscousStress)
 set_tests_properties(case.twoWay.viscousStress PROPERTIES
     TIMEOUT 120 LABELS "case;twoWay")
+
+# twoWay.dpmContact: the contact model of benchmarks/dpmFoamGoldschmidt
+#   (issue 11, goal 5) is DPMFoam's: LIGGGHTS' hertz with the restitution
+#   goldschmidtSetup.py derives from DPMFoam's damping alpha, for a pair of
+#   the tutorial's spheres and one on a wall at 0.1, 1 and 3 m/s: rebound
+#   coefficient and contact duration within 0.2 % of DPMFoam's force law
+#   integrated in the test (Hertz, Tsuji's damping).
+add_test(NAME case.twoWay.dpmContact
+    COMMAND ${twoWayDir}/runDpmContactTest.sh ${twoWayWork}/dpmContact)
+set_tests_properties(case.twoWay.dpmContact PROPERTIES
+    TIMEOUT 120 LABELS "case;twoWay;throughput")
