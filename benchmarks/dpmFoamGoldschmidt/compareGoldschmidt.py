@@ -74,11 +74,12 @@ def cost(log, particles, until, interval):
             t = float(m.group(1))
             if t > until*(1 + 1e-9):
                 break
-            steps += interval or 0
+            steps += interval or 1
             continue
+        # DPMFoam prints its sub-cycles only when there are more than one
         m = re.match(r"^\s*(\d+) move-collide subCycles", line)
         if m and interval is None and t is not None:
-            steps += int(m.group(1))
+            steps += int(m.group(1)) - 1
         m = re.match(r"^ExecutionTime = ([0-9.eE+-]+) s", line)
         if m and t is not None:
             wall = float(m.group(1))

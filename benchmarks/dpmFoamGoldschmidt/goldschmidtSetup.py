@@ -21,14 +21,24 @@ sqrt(R*) (Tsuji et al. 1992).  LIGGGHTS' hertz has the same form,
 sqrt(ln^2 e + pi^2): equal when |beta| = alpha / sqrt(5), which gives
 the coefficient of restitution set here.  E*, G* and R* are formed the
 same way in both; the tangential damping is LIGGGHTS' (sqrt(4 G*/E*) =
-0.89 times DPMFoam's, which takes the normal one), and a sliding contact
-keeps its spring at the Coulomb limit in LIGGGHTS where DPMFoam sets it
-to zero."""
+0.89 times DPMFoam's for pairs, 0.91 for walls; DPMFoam takes the normal
+one), and a sliding contact keeps its spring at the Coulomb limit in
+LIGGGHTS where DPMFoam sets it to zero.
+
+Also imported by tests/cases/twoWay/checkDpmContact.py (entry, the
+dictionary paths)."""
 import math
 import os
 import re
 import subprocess
 import sys
+
+
+# DPMFoam's particle properties and its contact models' coefficients
+CLOUD = os.path.join("constant", "kinematicCloudProperties")
+PAIR = "subModels/pairCollisionCoeffs/pairSpringSliderDashpotCoeffs/"
+WALL = "subModels/pairCollisionCoeffs/wallSpringSliderDashpotCoeffs/"
+DIAMETER = "subModels/injectionModels/model1/sizeDistribution/fixedValueDistribution/value"
 
 
 def entry(path, key):
@@ -42,6 +52,13 @@ def entry(path, key):
 
 def numbers(text):
     return [float(v) for v in re.findall(r"[-+]?(?:\d+\.?\d*|\.\d+)(?:[eE][-+]?\d+)?", text)]
+
+
+def list_body(path):
+    """The text of an OpenFOAM list file after its header, comments removed"""
+    text = re.sub(r"/\*.*?\*/", "", open(path).read(), flags=re.S)
+    text = re.sub(r"//[^\n]*", "", text)
+    return text[text.index("}", text.index("FoamFile")) + 1:]
 
 
 def restitution(alpha):
@@ -67,19 +84,17 @@ def patch_rebound(text, patch):
 def main():
     tutorial, case, end_time, write_interval, substeps = sys.argv[1:6]
     substeps = int(substeps)
-    cloud = os.path.join(tutorial, "constant", "kinematicCloudProperties")
-    pair = "subModels/pairCollisionCoeffs/pairSpringSliderDashpotCoeffs/"
-    wall = "subModels/pairCollisionCoeffs/wallSpringSliderDashpotCoeffs/"
+    cloud = os.path.join(tutorial, CLOUD)
     E = float(entry(cloud, "constantProperties/youngsModulus"))     # [Pa]
     nu_p = float(entry(cloud, "constantProperties/poissonsRatio"))
     rho_p = float(entry(cloud, "constantProperties/rho0"))          # [kg/m^3]
     alpha_max = float(entry(cloud, "constantProperties/alphaMax"))
-    d = float(entry(cloud, "subModels/injectionModels/model1/sizeDistribution/fixedValueDistribution/value"))
-    alpha_pp, mu_pp = float(entry(cloud, pair + "alpha")), float(entry(cloud, pair + "mu"))
-    if float(entry(cloud, pair + "b")) != 1.5 or float(entry(cloud, wall + "b")) != 1.5:
+    d = float(entry(cloud, DIAMETER))
+    alpha_pp, mu_pp = float(entry(cloud, PAIR + "alpha")), float(entry(cloud, PAIR + "mu"))
+    if float(entry(cloud, PAIR + "b")) != 1.5 or float(entry(cloud, WALL + "b")) != 1.5:
         sys.exit("goldschmidtSetup: DPMFoam's contact is not Hertzian (b != 1.5)")
-    alpha_pw, mu_pw = float(entry(cloud, wall + "alpha")), float(entry(cloud, wall + "mu"))
-    E_w, nu_w = float(entry(cloud, wall + "youngsModulus")), float(entry(cloud, wall + "poissonsRatio"))
+    alpha_pw, mu_pw = float(entry(cloud, WALL + "alpha")), float(entry(cloud, WALL + "mu"))
+    E_w, nu_w = float(entry(cloud, WALL + "youngsModulus")), float(entry(cloud, WALL + "poissonsRatio"))
     e_sym, mu_sym = patch_rebound(open(cloud).read(), "frontAndBack")
     transport = os.path.join(tutorial, "constant", "transportProperties")
     rho_f = float(entry(transport, "rho.air"))
@@ -98,10 +113,11 @@ def main():
     if abs(box[0][0] + box[0][1]) > 1e-9 or abs(box[1][0] + box[1][1]) > 1e-9 or box[2][0] != 0:
         sys.exit("goldschmidtSetup: expected a column centred in x and y on z = 0")
     r_um = 0.5e6*d
-    # symmetry faces: walls 50 um beyond a centre on the face
+    # symmetry faces: a wall r - 50 um beyond each, so that a particle
+    # touching it has its centre 50 um inside the fluid mesh
     sym_wall = box[0][1] + r_um - 50.0
 
-    positions = numbers(open(os.path.join(tutorial, "constant", "kinematicCloudPositions")).read().split("(", 1)[1])
+    positions = numbers(list_body(os.path.join(tutorial, "constant", "kinematicCloudPositions")))
     pts = [positions[k:k + 3] for k in range(0, len(positions) - 2, 3)]
     dem = os.path.join(case, "constant", "DEM")
     with open(os.path.join(dem, "goldschmidt.data"), "w") as f:
@@ -124,6 +140,7 @@ def main():
                 % (mu_pp, mu_pw, mu_sym, mu_pw, mu_pw, mu_pw, mu_sym, mu_pw, mu_sym))
         f.write("variable yWall equal %g\nvariable zTop equal %g\nvariable symmetryWall equal %g\n"
                 % (box[1][1], box[2][1], sym_wall))
+        f.write("variable particleDiameter equal %g\nvariable particleDensity equal %g\n" % (2*r_um, rho_p*1e-3))
     values = {
         "inletVelocity": "%g" % inlet[2], "endTime": end_time, "writeInterval": write_interval,
         "deltaT": "%g" % delta_t, "epsilonMin": "%g" % (1.0 - alpha_max), "rho": "%g" % rho_f,
@@ -144,4 +161,5 @@ def main():
           % (len(pts), d, rho_p, E, nu_p, e_pp, alpha_pp, e_pw, alpha_pw, delta_t/substeps, substeps, delta_t))
 
 
-main()
+if __name__ == "__main__":
+    main()

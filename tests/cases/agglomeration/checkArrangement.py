@@ -54,8 +54,8 @@ def checkCellFields(case, check):
     worst = 0.0
     for cloudDir in clouds:
         timeDir = os.path.dirname(os.path.dirname(cloudDir))
-        positions = particleCloud._values(os.path.join(cloudDir, "positions"), 4)
-        ids = particleCloud._values(os.path.join(cloudDir, "origId"), 1)
+        positions = particleCloud.list_values(os.path.join(cloudDir, "positions"), 4)
+        ids = particleCloud.list_values(os.path.join(cloudDir, "origId"), 1)
         want = {}
         for pos, (pid,) in zip(positions, ids):
             cell = want.setdefault(int(pos[3]), [0.0]*len(FIELDS))

@@ -4,7 +4,7 @@
 # in the stock liggghts with the materials goldschmidtSetup.py derives from
 # the DPMFoam tutorial, against DPMFoam's spring-slider-dashpot force law
 # (Hertz with Tsuji's damping) integrated in checkDpmContact.py: the
-# rebound velocity and the contact's duration within 0.2 %, at 0.1, 1 and
+# loss 1 - e and the contact's duration within 0.2 %, at 0.1, 1 and
 # 3 m/s (velocities in um/us = m/s; the sphere starts 50 um from the wall,
 # the pair 100 um apart).
 #
@@ -17,6 +17,12 @@ bench="$COLLOIDFOAM_DIR/benchmarks/dpmFoamGoldschmidt"
 tutorial=$(ls -d "$COLLOIDFOAM_DIR"/ThirdParty/openfoam-*/tutorials/lagrangian/DPMFoam/Goldschmidt | head -1)
 copyCase "$bench/case" "$work"
 python3 "$bench/goldschmidtSetup.py" "$tutorial" . 0.01 0.01 3
+# the tutorial's sphere [um] and density [pg/um^3], as the setup wrote them
+d=$(awk '$2 == "particleDiameter" {print $4}' constant/DEM/goldschmidt.liggghts)
+rho=$(awk '$2 == "particleDensity" {print $4}' constant/DEM/goldschmidt.liggghts)
+zPair1=3000
+zPair2=$(python3 -c "print($zPair1 + $d + 100)")
+zWall=$(python3 -c "print($d/2 + 50)")
 for v in 0.1 1 3
 do
     for target in pair wall
@@ -24,14 +30,14 @@ do
         # velocities: um/us = m/s
         if [ "$target" = pair ]
         then
-            atoms="create_atoms 1 single 0 0 3000 units box
-create_atoms 1 single 0 0 5600 units box
+            atoms="create_atoms 1 single 0 0 $zPair1 units box
+create_atoms 1 single 0 0 $zPair2 units box
 group one id 1
 group two id 2
 velocity one set 0 0 $(python3 -c "print($v/2)") units box
 velocity two set 0 0 $(python3 -c "print(-$v/2)") units box"
         else
-            atoms="create_atoms 1 single 0 0 1300 units box
+            atoms="create_atoms 1 single 0 0 $zWall units box
 velocity all set 0 0 -$v units box"
         fi
         steps=$(python3 -c "print(int(300/0.005 + 200/$v/0.005))")
@@ -45,7 +51,7 @@ communicate     single vel yes
 region          box block -5000 5000 -5000 5000 0 10000 units box
 create_box      3 box
 $atoms
-set group all diameter 2500 density 2.526
+set group all diameter $d density $rho
 include         constant/DEM/goldschmidt.liggghts
 neighbor        200 bin
 pair_style      gran model hertz tangential history
