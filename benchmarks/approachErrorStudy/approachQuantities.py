@@ -13,7 +13,8 @@ printed every step (gap.dat: step, gap [um]) and the DEM step
 each by linear interpolation between the two steps around the crossing.
 With -closedForm it prints instead the overdamped approach times of the
 same force laws (Stokes drag of each sphere and pair lubrication against
-the shifted van der Waals attraction, Simpson's rule): the DEM's inertia
+the van der Waals attraction, each shifted or faded at its outer cut-off,
+Simpson's rule): the DEM's inertia
 (relaxation time 12.5 ns against stages of 24 us and more) makes them
 differ by about 1e-3.
 
@@ -43,6 +44,8 @@ def parameter(name):
 HAMAKER = parameter("hamaker")
 VDW_CUTOFF = parameter("vdwOuterCutoff")
 LUB_CUTOFF = parameter("lubricationOuterCutoff")
+LUB_FADE = parameter("lubricationFade") == 1
+VDW_FADE = parameter("vdwFade") == 1
 START = parameter("initialGap")
 RADIUS = 0.5*couplingEntry("diameter")
 MU = couplingEntry("mu")
@@ -71,14 +74,40 @@ def crossings(levels):
     return times
 
 
+def smoothStep(h, cutoff):
+    """The faded form's weight: 1 up to half the cut-off, 0 at it"""
+    y = min(1.0, max(0.0, (cutoff - h)/(0.5*cutoff)))
+    return 3*y*y - 2*y*y*y
+
+
+def lubricationShape(h):
+    """The lubrication's 1/h with its outer cut-off [1/m] (lubrication.H:
+    shifted, or faded)"""
+    if h >= LUB_CUTOFF:
+        return 0.0
+    if LUB_FADE:
+        return smoothStep(h, LUB_CUTOFF)/h
+    return 1/h - 1/LUB_CUTOFF
+
+
+def attractionShape(h):
+    """The van der Waals 1/h^2 with its outer cut-off [1/m^2]
+    (gapCutoffs.H: shifted, or faded)"""
+    if h >= VDW_CUTOFF:
+        return 0.0
+    if VDW_FADE:
+        return smoothStep(h, VDW_CUTOFF)/(h*h)
+    return 1/(h*h) - 1/(VDW_CUTOFF*VDW_CUTOFF)
+
+
 def overdamped(a, b, intervals=200000):
     """Overdamped time [s] for the gap to close from b to a [m]"""
     rs = RADIUS/2      # reduced radius
     stokes = 6*math.pi*MU*RADIUS
 
     def integrand(h):
-        force = HAMAKER*rs/6*(1/(h*h) - 1/(VDW_CUTOFF*VDW_CUTOFF))
-        lubrication = 6*math.pi*MU*rs*rs*(1/h - 1/LUB_CUTOFF)
+        force = HAMAKER*rs/6*attractionShape(h)
+        lubrication = 6*math.pi*MU*rs*rs*lubricationShape(h)
         # each sphere: drag K v, and c (v1 - v2) with v2 = -v1
         return (stokes + 2*lubrication)/(2*force)
 

@@ -15,6 +15,11 @@
    Keyword (pair_style): timeStepCheck on|off (default on), see
    checkTimeStep() and colloid_time_step.h.
 
+   Van der Waals and lubrication at their outer cut-offs (property/global
+   vdwFade, lubricationFade): 0 (default) shifted, 1 faded (gapCutoffs.H,
+   lubrication.H: uncut up to half the cut-off, so a shorter cut-off keeps
+   the near field).
+
    Lubrication after a contact (property/global lubricationAfterContact,
    lub models): 0 (default) lubricates the separation as the approach; 1
    treats the film as ruptured once the overlap has exceeded the inner
@@ -395,7 +400,9 @@ private:
             const colloid::LubricationParameters & p = lub_.front().parameters();
             const double t = check.smallest([&](double m, double R, int)
             {
-                return lubricationTime(m/2, p.viscosity, R/2, p.innerCutoff, p.outerCutoff);
+                // the faded form is the uncut 1/h there (h_out -> inf)
+                return lubricationTime(m/2, p.viscosity, R/2, p.innerCutoff,
+                                       p.fade ? HUGE_VAL : p.outerCutoff);
             });
             check.limit("lubrication relaxation at its inner cut-off", t, 0.0);
         }
@@ -429,6 +436,9 @@ private:
         p.innerCutoff = read.optionalScalar("vdwInnerCutoff", p.innerCutoff, U::length, -HUGE_VAL, HUGE_VAL, "m");
         // finite: it sets the neighbour range
         p.outerCutoff = read.scalar("vdwOuterCutoff", U::length, 0.0, 1e-3, "m");
+        p.fade = read.selector("vdwFade", 2,
+            "0 (shifted: F(h) - F(h_out)) or 1 (faded: F(h) up to half the "
+            "outer cut-off, a smooth step to zero at it)") == 1;
         Colloid::TypePairTable A;
         read.typePair("hamakerConstant", U::energy, -HUGE_VAL, HUGE_VAL, "J", A);
         vdw_.clear();
@@ -519,6 +529,9 @@ private:
         p.viscosity = read.scalar("liquidViscosity", U::viscosity, -HUGE_VAL, HUGE_VAL, "Pa s");
         p.innerCutoff = read.optionalScalar("lubricationInnerCutoff", p.innerCutoff, U::length, -HUGE_VAL, HUGE_VAL, "m");
         p.outerCutoff = read.optionalScalar("lubricationOuterCutoff", p.outerCutoff, U::length, -HUGE_VAL, HUGE_VAL, "m");
+        p.fade = read.selector("lubricationFade", 2,
+            "0 (shifted: 1/h - 1/h_out) or 1 (faded: 1/h up to half the outer "
+            "cut-off, a smooth step to zero at it)") == 1;
         filmRupture_ = read.selector("lubricationAfterContact", 2,
             "0 (the separation lubricated as the approach) or 1 (no lubrication "
             "while separating after the overlap exceeded the inner cut-off)") == 1;

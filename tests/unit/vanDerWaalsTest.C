@@ -29,7 +29,8 @@ VanDerWaals make
 (
     VanDerWaalsForm form,
     double lambda = 0,
-    double hOut = HUGE_VAL
+    double hOut = HUGE_VAL,
+    bool fade = false
 )
 {
     VanDerWaalsParameters p;
@@ -37,6 +38,7 @@ VanDerWaals make
     p.form = form;
     p.retardationWavelength = lambda;
     p.outerCutoff = hOut;
+    p.fade = fade;
     return VanDerWaals(p);
 }
 
@@ -141,6 +143,56 @@ TEST(VanDerWaals, OuterCutoffIsForceShiftedAndContinuous)
     EXPECT_EQ(cut.energy(R1, R2, 2*hOut), 0.0);
     EXPECT_LE(std::fabs(cut.energy(R1, R2, hOut - eps)), 1e-9*std::fabs(full.energy(R1, R2, hOut)));
     EXPECT_EQ(cut.range(), hOut);
+}
+
+// The faded form: the uncut force up to hOut/2, then times the smooth step
+// w = 3y^2 - 2y^3 of y = (hOut - h)/(hOut/2), written out here; its energy
+// against the force integrated by adaptive Simpson to infinity
+TEST(VanDerWaals, OuterCutoffFadedKeepsTheNearField)
+{
+    const double hOut = 50e-9;
+    const double R1 = 0.15e-6, R2 = 0.45e-6;
+    for (VanDerWaalsForm form : {VanDerWaalsForm::derjaguin, VanDerWaalsForm::hamaker})
+    {
+        for (double R : {R2, wallRadius})
+        {
+            const VanDerWaals cut = make(form, 0, hOut, true);
+            const VanDerWaals full = make(form);
+            for (double h : {0.2e-9, 1e-9, 10e-9, 24.99e-9, 25e-9})
+            {
+                const double ref = full.force(R1, R, h);
+                EXPECT_NEAR(cut.force(R1, R, h), ref, 1e-13*std::fabs(ref)) << "h = " << h;
+            }
+            for (double h : {26e-9, 31.25e-9, 37.5e-9, 45e-9, 49.9e-9})
+            {
+                const double y = (hOut - h)/(0.5*hOut);
+                const double ref = full.force(R1, R, h)*(3*y*y - 2*y*y*y);
+                EXPECT_NEAR(cut.force(R1, R, h), ref, 1e-13*std::fabs(ref)) << "h = " << h;
+            }
+            EXPECT_EQ(cut.force(R1, R, hOut), 0.0);
+            EXPECT_EQ(cut.energy(R1, R, hOut), 0.0);
+            EXPECT_EQ(cut.energy(R1, R, 2*hOut), 0.0);
+            // slope continuous at hOut/2 and zero at hOut
+            const double dh = 1e-6*hOut, h1 = 0.5*hOut;
+            auto F = [&](double h) { return cut.force(R1, R, h); };
+            const double scale = std::fabs(F(h1))/h1;
+            EXPECT_NEAR((F(h1 + dh) - F(h1))/dh, (F(h1) - F(h1 - dh))/dh, 1e-4*scale);
+            EXPECT_NEAR((F(hOut - dh) - F(hOut - 2*dh))/dh, 0.0, 1e-4*scale);
+            // energy = work of the force from h to the cut-off, also below h0
+            for (double h : {-0.3e-9, 0.2e-9, 2e-9, 20e-9, 30e-9, 45e-9})
+            {
+                const double work = colloidTest::integratePiecewise(F, h, hOut, {h0, h1}, 1e-32);
+                EXPECT_NEAR(cut.energy(R1, R, h), work, 1e-9*std::fabs(work)) << "h = " << h;
+            }
+        }
+    }
+    // the near field must reach beyond the inner cut-off
+    VanDerWaalsParameters p;
+    p.hamakerConstant = A;
+    p.outerCutoff = 1.5*h0;
+    EXPECT_NO_THROW(VanDerWaals v(p));
+    p.fade = true;
+    EXPECT_THROW(VanDerWaals v(p), std::invalid_argument);
 }
 
 TEST(VanDerWaals, FullHamakerEnergyMatchesPairwiseSummation)
