@@ -9,6 +9,9 @@
 # probes:
 #   nuZero            nu 0 in system/slotCoaterParameters: stops before any
 #                     step, naming the file, keyword, value and range
+#   cutoffFormTypo    colloidCutoffForm fade (a typo of faded): stops
+#                     before any step, naming the file, keyword, value and
+#                     the two forms allowed
 #   notConverged      nu 1e-9: the steady flow does not converge; stops
 #                     saying so, no particle run
 #   fillTooDense      solidsFraction 0.5: the fill reaches less; stops
@@ -70,6 +73,12 @@ case "$probe" in
 nuZero)
     setParam nu 0
     expectFailure "system/slotCoaterParameters: keyword 'nu' is 0; allowed range: 0 < nu"
+    [ ! -e log.blockMesh ] || fail "blockMesh was run"
+    noParticleRun ;;
+
+cutoffFormTypo)
+    setParam colloidCutoffForm fade
+    expectFailure "system/slotCoaterParameters: keyword 'colloidCutoffForm' is 'fade'; allowed: faded or shifted"
     [ ! -e log.blockMesh ] || fail "blockMesh was run"
     noParticleRun ;;
 
