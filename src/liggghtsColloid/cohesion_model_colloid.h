@@ -15,10 +15,10 @@
    Keyword (pair_style): timeStepCheck on|off (default on), see
    checkTimeStep() and colloid_time_step.h.
 
-   Van der Waals and lubrication at their outer cut-offs (property/global
-   vdwFade, lubricationFade): 0 (default) shifted, 1 faded (gapCutoffs.H,
-   lubrication.H: uncut up to half the cut-off, so a shorter cut-off keeps
-   the near field).
+   Van der Waals, double layer and lubrication at their outer cut-offs
+   (property/global vdwFade, doubleLayerFade, lubricationFade): 0 (default)
+   shifted, 1 faded (gapCutoffs.H, lubrication.H: uncut up to half the
+   cut-off, so a shorter cut-off keeps the near field).
 
    Lubrication after a contact (property/global lubricationAfterContact,
    lub models): 0 (default) lubricates the separation as the approach; 1
@@ -479,6 +479,9 @@ private:
             p.electrolyte.relativePermittivity, 1.0, -HUGE_VAL, HUGE_VAL, "");
         p.innerCutoff = read.optionalScalar("doubleLayerInnerCutoff", p.innerCutoff, U::length, -HUGE_VAL, HUGE_VAL, "m");
         p.outerCutoff = read.scalar("doubleLayerOuterCutoff", U::length, 0.0, 1e-3, "m");
+        p.fade = read.selector("doubleLayerFade", 2,
+            "0 (shifted: F(h) - F(h_out)) or 1 (faded: F(h) up to half the "
+            "outer cut-off, a smooth step to zero at it)") == 1;
         std::vector<double> zeta;
         read.perType("zetaPotential", 1.0, -HUGE_VAL, HUGE_VAL, "V", zeta);
         dl_.clear();
@@ -493,27 +496,34 @@ private:
     }
 
     // The force-shift at the outer cut-off hc takes exp(-(hc - h0)/lambda)
-    // of the force at the inner cut-off h0 away (lambda: Debye length);
-    // printed by the pair style, with a warning above 5 % (hc < 3 lambda,
-    // e.g. nearly salt-free water, lambda ~ 1 um)
+    // of the force at the inner cut-off h0 away (lambda: Debye length); the
+    // fade starts at hc/2, where the force is exp(-(hc/2 - h0)/lambda) of
+    // that at h0. Printed by the pair style, with a warning above 5 % (hc
+    // under 3 lambda, or 6 faded: e.g. nearly salt-free water, lambda ~ 1 um)
     void reportDebyeLength(const colloid::DoubleLayerParameters & p)
     {
         if (comm->me != 0 || dl_.empty()) return;
         const double lambda = dl_.front().debyeLength();
-        const double removed = std::exp(-(p.outerCutoff - p.innerCutoff)/lambda);
+        const double uncut = p.fade ? 0.5*p.outerCutoff : p.outerCutoff;
+        const double removed = std::exp(-(uncut - p.innerCutoff)/lambda);
         char msg[512];
         std::snprintf(msg, sizeof(msg),
-            "%s: Debye length %g m; doubleLayerOuterCutoff %g m is %.3g Debye "
+            p.fade
+          ? "%s: Debye length %g m; doubleLayerOuterCutoff %g m is %.3g Debye "
+            "lengths; the fade from half of it starts where the force is %.3g "
+            "of that at the inner cut-off"
+          : "%s: Debye length %g m; doubleLayerOuterCutoff %g m is %.3g Debye "
             "lengths; the force-shift there removes %.3g of the force at the "
             "inner cut-off", name_, lambda, p.outerCutoff, p.outerCutoff/lambda, removed);
         if (screen) std::fprintf(screen, "%s\n", msg);
         if (logfile) std::fprintf(logfile, "%s\n", msg);
         if (removed <= 0.05) return;
         std::snprintf(msg, sizeof(msg),
-            "%s: doubleLayerOuterCutoff (%g m) is under 3 Debye lengths (%g m): "
+            "%s: doubleLayerOuterCutoff (%g m) is under %d Debye lengths (%g m): "
             "the double layer is cut to %.3g of its strength; use a cut-off of "
-            "%g um or more for the full force", name_, p.outerCutoff, lambda,
-            1.0 - removed, (p.innerCutoff + 3*lambda)/U::length);
+            "%g um or more for the full force", name_, p.outerCutoff, p.fade ? 6 : 3,
+            lambda, 1.0 - removed,
+            (p.fade ? 2 : 1)*(p.innerCutoff + 3*lambda)/U::length);
         error->warning(FLERR, msg);
     }
 

@@ -98,6 +98,15 @@ double LiggghtsRun::largestAllowedTimeStep() const
     return smallest;
 }
 
+std::string LiggghtsRun::waltonBraunMaterials()
+{
+    return
+        "fix m1 all property/global loadingStiffness peratomtypepair 2 100 100 100 100\n"
+        "fix m2 all property/global coefficientRestitution peratomtypepair 2 0.5 0.5 0.5 0.5\n"
+        "fix m3 all property/global coefficientFriction peratomtypepair 2 0.3 0.3 0.3 0.3\n";
+}
+
+
 std::string LiggghtsRun::header(double halfBox, const std::string& boundary)
 {
     const std::string b = std::to_string(halfBox);

@@ -227,6 +227,46 @@ TEST(DoubleLayer, ForceIntegralEqualsEnergyDifference)
     }
 }
 
+// The faded form: the uncut force up to hOut/2, then times the smooth step
+// w = 3y^2 - 2y^3 of y = (hOut - h)/(hOut/2), written out here; the energy
+// against the force integrated by adaptive Simpson to the cut-off
+TEST(DoubleLayer, OuterCutoffFadedKeepsTheNearField)
+{
+    const double hOut = 50e-9;
+    const double h0 = 0.4e-9;
+    const double R1 = 0.2e-6;
+    for (DoubleLayerForm form : {DoubleLayerForm::linearSuperposition, DoubleLayerForm::hoggHealyFuerstenau})
+    {
+        for (double R2 : {0.4e-6, wallRadius})
+        {
+            DoubleLayerParameters p = params(form, 1.0, -0.04, -0.02, hOut);
+            p.fade = true;
+            const DoubleLayer dl(p);
+            const DoubleLayer plain(params(form, 1.0, -0.04, -0.02));
+            for (double h : {0.4e-9, 3e-9, 24.99e-9, 25e-9})
+            {
+                const double ref = plain.force(R1, R2, h);
+                EXPECT_NEAR(dl.force(R1, R2, h), ref, 1e-13*std::fabs(ref)) << "h = " << h;
+            }
+            EXPECT_EQ(dl.force(R1, R2, -1e-9), plain.force(R1, R2, h0));
+            for (double h : {26e-9, 37.5e-9, 49e-9})
+            {
+                const double y = (hOut - h)/(0.5*hOut);
+                const double ref = plain.force(R1, R2, h)*(3*y*y - 2*y*y*y);
+                EXPECT_NEAR(dl.force(R1, R2, h), ref, 1e-13*std::fabs(ref)) << "h = " << h;
+            }
+            EXPECT_EQ(dl.force(R1, R2, hOut), 0.0);
+            EXPECT_EQ(dl.energy(R1, R2, hOut), 0.0);
+            auto F = [&](double h) { return dl.force(R1, R2, h); };
+            for (double h : {-1e-9, 1e-9, 10e-9, 30e-9})
+            {
+                const double work = colloidTest::integratePiecewise(F, h, hOut, {h0, 0.5*hOut}, 1e-32);
+                EXPECT_NEAR(dl.energy(R1, R2, h), work, 1e-8*std::fabs(work)) << "h = " << h;
+            }
+        }
+    }
+}
+
 TEST(DoubleLayer, RejectsBadParameters)
 {
     DoubleLayerParameters p = params(DoubleLayerForm::linearSuperposition, 1.0, -0.04, -0.04);

@@ -147,7 +147,7 @@ TEST(VanDerWaals, OuterCutoffIsForceShiftedAndContinuous)
 
 // The faded form: the uncut force up to hOut/2, then times the smooth step
 // w = 3y^2 - 2y^3 of y = (hOut - h)/(hOut/2), written out here; its energy
-// against the force integrated by adaptive Simpson to infinity
+// against the force integrated by adaptive Simpson to the cut-off
 TEST(VanDerWaals, OuterCutoffFadedKeepsTheNearField)
 {
     const double hOut = 50e-9;

@@ -32,8 +32,9 @@
 
     The energy is the work against the DEM's force, U(h) = integral from h
     to the largest outer cut-off of F(h') dh' (the forces are force-shifted
-    to zero at their outer cut-offs and held constant below their inner
-    ones), by the trapezoidal rule on 40 000 geometrically spaced gaps (its
+    to zero at their outer cut-offs, or with -cutoffForm faded all three
+    faded as the plugin's vdwFade, doubleLayerFade and lubricationFade do,
+    and held constant below their inner ones), by the trapezoidal rule on 40 000 geometrically spaced gaps (its
     error is far below 1e-4 k_B T here).
 
     Usage (SI units; defaults in brackets):
@@ -42,6 +43,7 @@
           [-valence 1] [-temperature 298.15] [-permittivity 78.4]
           [-vdwOuterCutoff 1e-7] [-doubleLayerOuterCutoff inf]
           [-innerCutoff 4e-10] [-form linearSuperposition|hoggHealyFuerstenau]
+          [-cutoffForm shifted|faded]
           [-ccc height_kT] [-zetaAt height_kT] [-csv file]
           [-stabilityRatio [-viscosity 1e-3] [-lubricationInnerCutoff 1e-9]
            [-lubricationOuterCutoff 1e-7] [-touchingGap 0.01 R_min]
@@ -94,6 +96,7 @@ struct Options
     std::string csv;
     bool stability = false;
     double viscosity = 1e-3, lubInner = 1e-9, lubOuter = 1e-7;
+    bool fade = false;      // -cutoffForm faded (all three terms)
     double touchingGap = std::nan(""), solidsFraction = std::nan("");
 };
 
@@ -103,7 +106,8 @@ struct Options
         "usage: colloidBarrier -radius R [-radius2 R2 | -wall] -hamaker A -zeta z1 [-zeta2 z2]\n"
         "           -salt c [-valence z] [-temperature T] [-permittivity eps_r]\n"
         "           [-vdwOuterCutoff h] [-doubleLayerOuterCutoff h] [-innerCutoff h]\n"
-        "           [-form linearSuperposition|hoggHealyFuerstenau] [-ccc height_kT] [-zetaAt height_kT]\n"
+        "           [-form linearSuperposition|hoggHealyFuerstenau] [-cutoffForm shifted|faded]\n"
+        "           [-ccc height_kT] [-zetaAt height_kT]\n"
         "           [-csv file] [-stabilityRatio [-viscosity mu] [-lubricationInnerCutoff h]\n"
         "           [-lubricationOuterCutoff h] [-touchingGap h] [-solidsFraction phi]]\n"
         "       (SI units: m, J, V, mol/m^3 = mM, K)\n";
@@ -156,6 +160,15 @@ Options parse(int argc, char** argv)
         else if (a == "-lubricationOuterCutoff") o.lubOuter = number(a, v);
         else if (a == "-touchingGap") o.touchingGap = number(a, v);
         else if (a == "-solidsFraction") o.solidsFraction = number(a, v);
+        else if (a == "-cutoffForm")
+        {
+            const std::string f = v;
+            if (f != "shifted" && f != "faded")
+            {
+                usage("option -cutoffForm: '" + f + "' is not shifted or faded");
+            }
+            o.fade = f == "faded";
+        }
         else if (a == "-form")
         {
             const std::string f = v;
@@ -207,6 +220,7 @@ struct Pair
         p.hamakerConstant = o.hamaker;
         p.innerCutoff = o.inner;
         p.outerCutoff = o.vdwOuter;
+        p.fade = o.fade;
         return p;
     }
     static colloid::DoubleLayerParameters dlParameters(const Options& o, double c)
@@ -221,6 +235,7 @@ struct Pair
         p.form = o.form;
         p.innerCutoff = o.inner;
         p.outerCutoff = o.dlOuter;
+        p.fade = o.fade;
         return p;
     }
     Pair(const Options& o, double c)
@@ -298,6 +313,7 @@ double encounterIntegral(const Curve& c, const Options& o, double kT, bool withF
     lp.viscosity = o.viscosity;
     lp.innerCutoff = o.lubInner;
     lp.outerCutoff = o.lubOuter;
+    lp.fade = o.fade;
     const colloid::Lubrication lub(lp);
     const double S = o.R1 + o.R2;
     const double zetaRed = 6*colloid::constants::pi*o.viscosity*o.R1*o.R2/S;

@@ -33,7 +33,11 @@ and k = 4 pi D_inf/I with D_inf = k_B T/zeta_red, zeta_red = 6 pi mu R*:
     (two radii, two touching gaps);
   - with the double layer near its critical value (zeta -10 mV, barrier
     about 7 kT) W by Simpson's rule on U of the closed form above within
-    0.1 % (e^(7 kT) magnifies an error in U sevenfold; measured 3e-5).
+    0.1 % (e^(7 kT) magnifies an error in U sevenfold; measured 3e-5);
+  - with the faded cut-offs at 0.05 um (-cutoffForm faded): lubrication
+    only within 1e-4, with the faded van der Waals attraction (zeta 0) and
+    with the 7 kT barrier (zeta -10 mV, all three faded) within 1e-3, by
+    Simpson's rule on the faded laws written out here.
 
     checkBarrier.py colloidBarrier
 """
@@ -135,6 +139,44 @@ I = sum((1 if j in (0, m) else 4 if j % 2 else 2)*g(math.exp(x0 + j*dx))*math.ex
         for j in range(m + 1))*dx/3 + 1/(S + H)
 r = run('-radius', R, '-hamaker', A, '-zeta', zeta3, '-salt', c, '-stabilityRatio', *NONE)
 check('W, zeta -10 mV', r['stabilityRatio'], S*I, 0.001)
+
+# 7. The faded cut-offs (-cutoffForm faded, the slot coater's since
+# 2026-12-05): the force uncut up to half the outer cut-off hc, then times
+# w = 3y^2 - 2y^3, y = (hc - h)/(hc/2); W by Simpson's rule on ln h with
+# the faded lubrication, and with the faded van der Waals attraction of the
+# isoelectric point, whose energy is the faded force integrated here
+def fade(h, hc):
+    y = min(1.0, max(0.0, (hc - h)/(0.5*hc)))
+    return 3*y*y - 2*y*y*y
+
+
+def simpsonLog(f, a, b, m=20000):
+    x0, x1 = math.log(a), math.log(b)
+    dx = (x1 - x0)/m
+    return sum((1 if j in (0, m) else 4 if j % 2 else 2)*f(math.exp(x0 + j*dx))*math.exp(x0 + j*dx)
+               for j in range(m + 1))*dx/3
+
+
+hc, ht, S, Rs = 0.05e-6, 1.5e-9, 2*R, R/2
+betaFaded = lambda h: 1 + (Rs*fade(h, hc)/max(h, hIn) if h < hc else 0)
+faded = ['-cutoffForm', 'faded', '-lubricationInnerCutoff', hIn, '-lubricationOuterCutoff', hc,
+         '-viscosity', mu, '-touchingGap', ht, '-stabilityRatio']
+I = simpsonLog(lambda h: betaFaded(h)/(S + h)**2, ht, hc) + 1/(S + hc)
+r = run('-radius', R, '-hamaker', 0, '-zeta', 0, '-salt', c, *faded)
+check('W, faded lubrication only', r['stabilityRatio'], S*I, 1e-4)
+h0 = 4e-10
+Fvdw = lambda h: A*Rs/(6*max(h, h0)**2)*fade(h, hc)   # attraction [N]
+Uvdw = lambda h: -simpsonLog(Fvdw, h, hc, 400) if h < hc else 0.0
+I = simpsonLog(lambda h: betaFaded(h)*math.exp(Uvdw(h)/kT)/(S + h)**2, ht, hc, 4000) + 1/(S + hc)
+r = run('-radius', R, '-hamaker', A, '-zeta', 0, '-salt', c, '-vdwOuterCutoff', hc, *faded)
+check('W, faded van der Waals and lubrication', r['stabilityRatio'], S*I, 1e-3)
+# and the 7 kT barrier of case 6 with all three faded at the same cut-off
+Fall = lambda h: (B3*k*math.exp(-k*max(h, h0)) - A*Rs/(6*max(h, h0)**2))*fade(h, hc)
+Uall = lambda h: simpsonLog(Fall, h, hc, 400) if h < hc else 0.0
+I = simpsonLog(lambda h: betaFaded(h)*math.exp(Uall(h)/kT)/(S + h)**2, ht, hc, 4000) + 1/(S + hc)
+r = run('-radius', R, '-hamaker', A, '-zeta', zeta3, '-salt', c, '-vdwOuterCutoff', hc,
+        '-doubleLayerOuterCutoff', hc, *faded)
+check('W, zeta -10 mV, all faded', r['stabilityRatio'], S*I, 1e-3)
 
 # 4. bad input
 bad = subprocess.run([tool] + [str(a) for a in ('-radius', R, '-hamaker', A, '-zeta', zeta, '-salt', -1)],
