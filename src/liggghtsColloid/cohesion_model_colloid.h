@@ -495,23 +495,34 @@ private:
         if (!isWall_) reportDebyeLength(p);
     }
 
-    // The force-shift at the outer cut-off hc takes exp(-(hc - h0)/lambda)
-    // of the force at the inner cut-off h0 away (lambda: Debye length); the
-    // fade starts at hc/2, where the force is exp(-(hc/2 - h0)/lambda) of
-    // that at h0. Printed by the pair style, with a warning above 5 % (hc
-    // under 3 lambda, or 6 faded: e.g. nearly salt-free water, lambda ~ 1 um)
+    // What the outer cut-off hc takes away (lambda: Debye length), printed
+    // by the pair style, with a warning above 5 % (e.g. nearly salt-free
+    // water, lambda ~ 1 um): shifted, the fraction exp(-(hc - h0)/lambda)
+    // of the force at the inner cut-off h0 (at every gap; hc under 3
+    // lambda warns); faded, the force is uncut up to hc/2 and what is lost
+    // is the fraction of the energy at h0 that the fade takes (the kernel's
+    // faded and uncut energies of the particles' own type pair)
     void reportDebyeLength(const colloid::DoubleLayerParameters & p)
     {
         if (comm->me != 0 || dl_.empty()) return;
-        const double lambda = dl_.front().debyeLength();
-        const double uncut = p.fade ? 0.5*p.outerCutoff : p.outerCutoff;
-        const double removed = std::exp(-(uncut - p.innerCutoff)/lambda);
+        const colloid::DoubleLayer & dl = dl_.front();
+        const double lambda = dl.debyeLength();
+        double removed = std::exp(-(p.outerCutoff - p.innerCutoff)/lambda);
+        if (p.fade)
+        {
+            colloid::DoubleLayerParameters q = dl.parameters();
+            q.fade = false;
+            q.outerCutoff = HUGE_VAL;
+            const double R = 1e-6;   // m: the ratio does not depend on it
+            const double full = colloid::DoubleLayer(q).energy(R, R, p.innerCutoff);
+            removed = full != 0.0 ? 1 - dl.energy(R, R, p.innerCutoff)/full : 0.0;
+        }
         char msg[512];
         std::snprintf(msg, sizeof(msg),
             p.fade
           ? "%s: Debye length %g m; doubleLayerOuterCutoff %g m is %.3g Debye "
-            "lengths; the fade from half of it starts where the force is %.3g "
-            "of that at the inner cut-off"
+            "lengths; faded from half of it, it takes %.3g of the energy at "
+            "the inner cut-off"
           : "%s: Debye length %g m; doubleLayerOuterCutoff %g m is %.3g Debye "
             "lengths; the force-shift there removes %.3g of the force at the "
             "inner cut-off", name_, lambda, p.outerCutoff, p.outerCutoff/lambda, removed);
@@ -519,10 +530,10 @@ private:
         if (logfile) std::fprintf(logfile, "%s\n", msg);
         if (removed <= 0.05) return;
         std::snprintf(msg, sizeof(msg),
-            "%s: doubleLayerOuterCutoff (%g m) is under %d Debye lengths (%g m): "
-            "the double layer is cut to %.3g of its strength; use a cut-off of "
-            "%g um or more for the full force", name_, p.outerCutoff, p.fade ? 6 : 3,
-            lambda, 1.0 - removed,
+            "%s: doubleLayerOuterCutoff (%g m) is short for the Debye length "
+            "(%g m): the double layer is cut to %.3g of its %s; use a cut-off "
+            "of %g um or more for the full force", name_, p.outerCutoff, lambda,
+            1.0 - removed, p.fade ? "energy at contact" : "force",
             (p.fade ? 2 : 1)*(p.innerCutoff + 3*lambda)/U::length);
         error->warning(FLERR, msg);
     }

@@ -11,7 +11,8 @@
     uncut for h <= hc/2 and times w = 3y^2 - 2y^3, y = (hc - h)/(hc/2),
     between hc/2 and hc (both terms at the same cut-off hc), zero beyond.
     The shifted forms would differ by Fvdw(hc) and Fdl(hc) at every gap
-    (3 % of the attraction at hc/2), which the tolerance (1e-8) tells apart.
+    (1.7 % of the net force at hc/2), which the tolerance (1e-8) tells
+    apart.
 \*---------------------------------------------------------------------------*/
 #include "liggghtsRun.H"
 
