@@ -88,9 +88,27 @@ set_tests_properties(case.agglomeration.barrier PROPERTIES
 # on a hand-built cloud (testStudyWhere.py): members across the periodic
 # span, the touching gap, centres and the parts of the die
 add_test(NAME agglomeration.studyWhere
-    COMMAND python3 ${agglomerationDir}/testStudyWhere.py ${CMAKE_SOURCE_DIR}
+    COMMAND /usr/bin/python3 ${agglomerationDir}/testStudyWhere.py ${CMAKE_SOURCE_DIR}
             ${agglomerationWork}/studyWhere)
 set_tests_properties(agglomeration.studyWhere PROPERTIES
+    TIMEOUT 30 LABELS "unit;agglomeration" ENVIRONMENT PYTHONDONTWRITEBYTECODE=1
+    PASS_REGULAR_EXPRESSION "PASS")
+
+# agglomeration.pairGaps: the close pairs of a cloud that the study's
+# report counts (src/python/pairGaps.py, a grid of cells with the periodic
+# span) against all pairs checked one by one (testPairGaps.py)
+add_test(NAME agglomeration.pairGaps
+    COMMAND /usr/bin/python3 ${agglomerationDir}/testPairGaps.py ${CMAKE_SOURCE_DIR})
+set_tests_properties(agglomeration.pairGaps PROPERTIES
+    TIMEOUT 60 LABELS "unit;agglomeration" ENVIRONMENT PYTHONDONTWRITEBYTECODE=1
+    PASS_REGULAR_EXPRESSION "PASS")
+
+# agglomeration.studyCost: the run time and rate the study's report gives
+# a resumed run: its parts' logs summed (testStudyCost.py, figures by hand)
+add_test(NAME agglomeration.studyCost
+    COMMAND /usr/bin/python3 ${agglomerationDir}/testStudyCost.py ${CMAKE_SOURCE_DIR}
+            ${agglomerationWork}/studyCost)
+set_tests_properties(agglomeration.studyCost PROPERTIES
     TIMEOUT 30 LABELS "unit;agglomeration" ENVIRONMENT PYTHONDONTWRITEBYTECODE=1
     PASS_REGULAR_EXPRESSION "PASS")
 

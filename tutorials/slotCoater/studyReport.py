@@ -12,9 +12,17 @@ constant/couplingProperties; across the periodic span).
 
     studyReport.py studyDir resultsDir
 
-Run time and rate: from the case's log.colloidDEMFoam (the last
-'ExecutionTime' and 'Timing' lines; a resumed run's log covers its last
-part only)."""
+Pairs held near contact (results/gaps.md, gaps.png): at every write of
+each case, the pairs of particles closer than 50 nm that do not touch
+(surface gap at least the agglomerate gap of the smaller radius), the
+closest of them, and how many lie within 5, 10, 20 and 50 nm: the pairs
+the shear has brought together and the double layer holds apart, which
+the contact counts do not show.
+
+Run time and rate: from the case's log.colloidDEMFoam, and the logs of
+the earlier parts of a resumed run (log.colloidDEMFoam.to<time>): the
+'ExecutionTime' of the parts summed, the particle-steps per second per
+rank over them (their last 'Timing' lines)."""
 import glob
 import itertools
 import os
@@ -25,14 +33,22 @@ sys.dont_write_bytecode = True
 sys.path.insert(0, os.path.join(os.environ.get("COLLOIDFOAM_DIR", "../.."), "src", "python"))
 import contactAnalysis  # noqa: E402
 import foamDict  # noqa: E402
+import numpy as np  # noqa: E402
+import pairGaps  # noqa: E402
 import particleCloud  # noqa: E402
 
 
 def cost(case):
-    """(end time [s], execution time [s], particle-steps per s per rank)"""
-    log = os.path.join(case, "log.colloidDEMFoam")
-    end = seconds = rate = float("nan")
-    if os.path.exists(log):
+    """(end time [s], execution time [s], particle-steps per s per rank)
+    of the whole run: a resumed run's parts (log.colloidDEMFoam.to<time>,
+    which Allrun -resume keeps, and log.colloidDEMFoam) summed"""
+    logs = sorted(glob.glob(os.path.join(case, "log.colloidDEMFoam.to*")),
+                  key=lambda f: float(f.rsplit(".to", 1)[1]))
+    logs.append(os.path.join(case, "log.colloidDEMFoam"))
+    end = float("nan")
+    seconds = steps = timed = 0.0
+    for log in (f for f in logs if os.path.exists(f)):
+        part_seconds = part_rate = part_timed = 0.0
         with open(log) as f:
             for line in f:
                 m = re.match(r"^Time = (\S+)", line)
@@ -40,11 +56,16 @@ def cost(case):
                     end = float(m.group(1))
                 m = re.match(r"^ExecutionTime = (\S+) s", line)
                 if m:
-                    seconds = float(m.group(1))
-                m = re.search(r"; (\S+) particle-steps per second per rank", line)
+                    part_seconds = float(m.group(1))
+                m = re.match(r"^Timing \(master, wall clock\): DEM (\S+) s, coupling (\S+) s; "
+                             r"(\S+) particle-steps per second per rank", line)
                 if m:
-                    rate = float(m.group(1))
-    return end, seconds, rate
+                    part_timed = float(m.group(1)) + float(m.group(2))
+                    part_rate = float(m.group(3))
+        seconds += part_seconds
+        steps += part_rate*part_timed       # particle-steps per rank
+        timed += part_timed
+    return end, seconds or float("nan"), steps/timed if timed else float("nan")
 
 
 def geometry(case):
@@ -125,6 +146,60 @@ def agglomerates(case):
         c[2] %= g["span"]       # back into the span (the DEM's z from 0)
         found.append((sorted(cloud["id"][k] for k in ks), c, part_of_die(g, c[0], c[1])))
     return particleCloud.time(last), sorted(found, key=lambda f: f[1][0])
+
+
+# bounds [m] of the close-pair counts (the last one bounds the search)
+NEAR_GAPS = (5e-9, 10e-9, 20e-9, 50e-9)
+
+
+def close_pairs(case, path):
+    """Counts of the pairs at one write that do not touch and lie within
+    each of NEAR_GAPS, and the closest such gap [m] (nan if none)"""
+    cloud = particleCloud.read(path)
+    i, j, gap = pairGaps.close_pairs(cloud["position"], cloud["radius"],
+                                     geometry(case)["span"], NEAR_GAPS[-1])
+    r = np.array(cloud["radius"])
+    apart = gap >= agglomerate_gap(case)*np.minimum(r[i], r[j])
+    held = gap[apart]
+    return [int((held < g).sum()) for g in NEAR_GAPS], (held[0] if len(held) else float("nan"))
+
+
+def write_gaps(cases, resultsDir):
+    """results/gaps.md (each case's last write) and gaps.png (against time)"""
+    bounds = " | ".join("within %g nm" % (g*1e9) for g in NEAR_GAPS)
+    rows = ["| case | write time [µs] | closest gap of the pairs not touching [nm] | %s |" % bounds,
+            "|---|---|---|" + "---|"*len(NEAR_GAPS)]
+    series = {}
+    for case in cases:
+        name = os.path.basename(case)
+        times, counts = [], []
+        for path in particleCloud.write_times(case):
+            n, closest = close_pairs(case, path)
+            times.append(particleCloud.time(path)*1e6)
+            counts.append(n)
+        series[name] = (times, counts)
+        rows.append("| %s | %.4g | %s | %s |" % (
+            name, times[-1], "none" if closest != closest else "%.3g" % (closest*1e9),
+            " | ".join(str(k) for k in counts[-1])))
+    with open(os.path.join(resultsDir, "gaps.md"), "w") as f:
+        f.write("\n".join(rows) + "\n")
+    print("\n".join(rows))
+
+    import matplotlib
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+    fig, axes = plt.subplots(1, 2, figsize=(11, 4))
+    for axis, k in zip(axes, (1, len(NEAR_GAPS) - 1)):
+        for name, (t, counts) in series.items():
+            axis.plot(t, [c[k] for c in counts], "o-", ms=3, label=name)
+        axis.set_xlabel("time [µs]")
+        axis.set_ylabel("pairs within %g nm, not touching" % (NEAR_GAPS[k]*1e9))
+        axis.set_ylim(bottom=0)
+    axes[0].legend(fontsize=8)
+    fig.tight_layout()
+    fig.savefig(os.path.join(resultsDir, "gaps.png"), dpi=120)
+    print("written: %s, %s" % (os.path.join(resultsDir, "gaps.md"),
+                                os.path.join(resultsDir, "gaps.png")))
 
 
 def write_where(cases, resultsDir):
@@ -226,6 +301,7 @@ def main(studyDir, resultsDir):
     print("written: %s, %s" % (os.path.join(resultsDir, "summary.md"),
                                 os.path.join(resultsDir, "contacts.png")))
     write_where(cases, resultsDir)
+    write_gaps(cases, resultsDir)
 
 
 if __name__ == "__main__":

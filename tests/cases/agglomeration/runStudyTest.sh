@@ -9,7 +9,8 @@
 # of the gap and the slot), a second set-up of the same case without
 # -resume stops naming the folder, and the report writes its tables (a row
 # for the case in summary.md, and in where.md: no agglomerate after two
-# steps from a fill 100 nm apart) and its plots.
+# steps from a fill 100 nm apart; in gaps.md: no pair within 50 nm) and
+# its plots.
 #
 # usage: runStudyTest.sh workDir
 set -e
@@ -63,4 +64,8 @@ grep -q "^| isoelectricBrownian | 0.02 |" results/summary.md || { cat results/su
 [ -s results/contacts.png ] || fail "no contacts.png"
 grep -q "^| isoelectricBrownian | 0.02 | none |" results/where.md || { cat results/where.md; fail "where row"; }
 [ -s results/where.png ] || fail "no where.png"
+# the fill starts every pair 100 nm apart: after two steps none within 50 nm
+grep -q "^| isoelectricBrownian | 0.02 | none | 0 | 0 | 0 | 0 |" results/gaps.md \
+    || { cat results/gaps.md; fail "gaps row"; }
+[ -s results/gaps.png ] || fail "no gaps.png"
 echo PASS

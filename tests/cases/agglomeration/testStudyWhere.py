@@ -13,11 +13,15 @@ as the run's analysis would:
   D  two pairs under the downstream lip, 2 % of a radius apart (beyond the
      agglomerate gap of 1 %, constant/couplingProperties): two
      agglomerates, not one
-  E  a chain of four along z (0.2 ... 1.1 um), wider than half the span:
-     centre z 0.65 um
+  E  a chain of four along z, 1 nm apart (touching: below 1 % of R =
+     1.5 nm; z 0.2 ... 1.103 um), wider than half the span: centre z
+     0.6515 um; its end particles face each other across the periodic
+     face 47 nm apart (1.25 - 0.903 - 0.3 um)
 
 Expected (by construction): 6 agglomerates with these members, centres
-(to 1e-12 m) and parts of the die.
+(to 1e-12 m) and parts of the die; two pairs within 50 nm not touching
+(D's middle pair, 3 nm apart, and E's ends, 47 nm: the report's close
+pairs).
 
 usage: testStudyWhere.py colloidFoamDir workDir
 """
@@ -59,8 +63,8 @@ def main():
              (7, 20*u, 60*u, 0.6*u, 2), (8, 20*u, 60.3*u, 0.6*u, 2),                   # C
              (9, 120*u, 2*u, 0.3*u, 2), (10, 120.3*u, 2*u, 0.3*u, 2),
              (11, 120.6*u + 0.02*R, 2*u, 0.3*u, 2), (12, 120.9*u + 0.02*R, 2*u, 0.3*u, 2),  # D
-             (13, 80*u, 5*u, 0.2*u, 4), (14, 80*u, 5*u, 0.5*u, 4),
-             (15, 80*u, 5*u, 0.8*u, 4), (16, 80*u, 5*u, 1.1*u, 4)]                      # E
+             (13, 80*u, 5*u, 0.2*u, 4), (14, 80*u, 5*u, 0.501*u, 4),
+             (15, 80*u, 5*u, 0.802*u, 4), (16, 80*u, 5*u, 1.103*u, 4)]                      # E
     cloud = os.path.join(work, "1e-05", "lagrangian", "particles")
     os.makedirs(cloud)
     write_list(os.path.join(cloud, "positions"), [(p[1], p[2], p[3], 0) for p in parts],
@@ -77,7 +81,7 @@ def main():
                  "under the upstream lip"),
                 ([7, 8], (20*u, 60.15*u, 0.6*u), "in the slot"),
                 ([3, 4, 5], (50.3*u, 0.5*u, 0.5*u), "below the slot"),
-                ([13, 14, 15, 16], (80*u, 5*u, 0.65*u), "below the slot"),
+                ([13, 14, 15, 16], (80*u, 5*u, 0.6515*u), "below the slot"),
                 ([9, 10], (120.15*u, 2*u, 0.3*u), "under the downstream lip"),
                 ([11, 12], (120.75*u + 0.02*R, 2*u, 0.3*u), "under the downstream lip")]
     ok = abs(t - 1e-5) < 1e-15 and len(found) == len(expected)
@@ -89,6 +93,16 @@ def main():
         print("%s: %s at %s: %s" % (ids, part, ["%.4g" % x for x in c],
                                      "ok" if good else "FAIL (found %s)" % match))
         ok = ok and good
+    # the pairs held near contact (close_pairs): within 50 nm and not
+    # touching, D's middle pair (0.02 R = 3 nm, beyond the touching gap of
+    # 0.01 R) and E's ends across the periodic face (47 nm); every other
+    # pair within 50 nm touches (gap 0 or E's 1 nm), B's fourth included
+    counts, closest = studyReport.close_pairs(work, os.path.join(work, "1e-05"))
+    good = counts == [1, 1, 1, 2] and abs(closest - 0.02*R) < 1e-15
+    print("pairs not touching within 5, 10, 20, 50 nm: %s, closest %.4g nm (expected "
+          "[1, 1, 1, 2], %.4g nm): %s" % (counts, closest*1e9, 0.02*R*1e9,
+                                          "ok" if good else "FAIL"))
+    ok = ok and good
     print("PASS" if ok else "FAIL")
     return 0 if ok else 1
 
