@@ -8,7 +8,10 @@ particles).  numpy only (a Debian package; scipy is not a dependency).
 
 position [m] (N x 3), radius [m] (N), span [m] the z period (z taken
 modulo span), max_gap [m]: indices i < j into the arrays and the gaps [m]
-of the pairs with gap < max_gap, sorted by gap."""
+of the pairs with gap < max_gap (overlaps included: negative gaps),
+sorted by gap, each pair once.  ValueError if the span is less than two
+cells (2 x the largest radius + max_gap): a pair would meet itself
+through two images."""
 import numpy as np
 
 
@@ -21,8 +24,8 @@ def close_pairs(position, radius, span, max_gap):
     if max_gap <= 0:
         raise ValueError("max_gap %g m: must be positive" % max_gap)
     pos[:, 2] %= span
-    # a cell holds every partner a sphere can have within max_gap in the
-    # cells around its own
+    # cells 2 x the largest radius + max_gap wide: every partner of a
+    # sphere lies in the 27 cells around its own
     cell = 2*r.max() + max_gap
     if span < 2*cell:
         # a pair would meet itself through two images
@@ -42,7 +45,7 @@ def close_pairs(position, radius, span, max_gap):
     order = np.argsort(key, kind="stable")
     sorted_key = key[order]
 
-    first, second = [], []
+    found_i, found_j, found_gap = [], [], []
     for dx in (-1, 0, 1):
         for dy in (-1, 0, 1):
             for dz in (-1, 0, 1):
@@ -54,16 +57,18 @@ def close_pairs(position, radius, span, max_gap):
                 # the members of each neighbour cell, run by run
                 start = np.repeat(lo - np.cumsum(count) + count, count)
                 b = order[start + np.arange(count.sum())]
-                first.append(a)
-                second.append(b)
-    a = np.concatenate(first)
-    b = np.concatenate(second)
-    i, j = owner[a], owner[b]
-    keep = i < j
-    a, b, i, j = a[keep], b[keep], i[keep], j[keep]
-    gap = np.linalg.norm(p[a] - p[b], axis=1) - rr[a] - rr[b]
-    close = gap < max_gap
-    i, j, gap = i[close], j[close], gap[close]
+                # each pair once (i < j), and only the close ones kept
+                # from one neighbour cell to the next
+                keep = owner[a] < owner[b]
+                a, b = a[keep], b[keep]
+                gap = np.linalg.norm(p[a] - p[b], axis=1) - rr[a] - rr[b]
+                close = gap < max_gap
+                found_i.append(owner[a[close]])
+                found_j.append(owner[b[close]])
+                found_gap.append(gap[close])
+    i = np.concatenate(found_i)
+    j = np.concatenate(found_j)
+    gap = np.concatenate(found_gap)
     # a pair across the periodic face is found from both of its images
     pair = i*np.int64(n) + j
     pair, index = np.unique(pair, return_index=True)

@@ -19,10 +19,13 @@ closest of them, and how many lie within 5, 10, 20 and 50 nm: the pairs
 the shear has brought together and the double layer holds apart, which
 the contact counts do not show.
 
+The counts of each write are kept in the case
+(postProcessing/closePairs/closePairs.csv) and not computed again.
+
 Run time and rate: from the case's log.colloidDEMFoam, and the logs of
 the earlier parts of a resumed run (log.colloidDEMFoam.to<time>): the
-'ExecutionTime' of the parts summed, the particle-steps per second per
-rank over them (their last 'Timing' lines)."""
+wall-clock 'ClockTime' of the parts summed, the particle-steps per second
+per rank over them (their last 'Timing' lines)."""
 import glob
 import itertools
 import os
@@ -38,23 +41,36 @@ import pairGaps  # noqa: E402
 import particleCloud  # noqa: E402
 
 
+def run_logs(case):
+    """The logs of a case's coupled run, in order: the earlier parts of a
+    resumed run (log.colloidDEMFoam.to<time>, numbered .to<time>.<n> when
+    resumed from one write more than once: Allrun -resume), then
+    log.colloidDEMFoam; other files named alike (backups) are not logs"""
+    kept = []
+    for f in glob.glob(os.path.join(case, "log.colloidDEMFoam.to*")):
+        m = re.search(r"\.to([-+]?\d*\.?\d+(?:[eE][-+]?\d+)?)(?:\.(\d+))?$", f)
+        if m:
+            kept.append(((float(m.group(1)), int(m.group(2) or 1)), f))
+    logs = [f for _, f in sorted(kept)] + [os.path.join(case, "log.colloidDEMFoam")]
+    return [f for f in logs if os.path.exists(f)]
+
+
 def cost(case):
-    """(end time [s], execution time [s], particle-steps per s per rank)
-    of the whole run: a resumed run's parts (log.colloidDEMFoam.to<time>,
-    which Allrun -resume keeps, and log.colloidDEMFoam) summed"""
-    logs = sorted(glob.glob(os.path.join(case, "log.colloidDEMFoam.to*")),
-                  key=lambda f: float(f.rsplit(".to", 1)[1]))
-    logs.append(os.path.join(case, "log.colloidDEMFoam"))
+    """(end time [s], wall-clock run time [s], particle-steps per s per
+    rank) of the whole run: the parts of a resumed run summed (their
+    'ClockTime'; a part that was killed counts the steps after its last
+    write, which the resume does again), the rate over their last
+    'Timing' lines (DEM and coupling wall-clock time)"""
     end = float("nan")
     seconds = steps = timed = 0.0
-    for log in (f for f in logs if os.path.exists(f)):
+    for log in run_logs(case):
         part_seconds = part_rate = part_timed = 0.0
         with open(log) as f:
             for line in f:
                 m = re.match(r"^Time = (\S+)", line)
                 if m:
                     end = float(m.group(1))
-                m = re.match(r"^ExecutionTime = (\S+) s", line)
+                m = re.match(r"^ExecutionTime = \S+ s +ClockTime = (\S+) s", line)
                 if m:
                     part_seconds = float(m.group(1))
                 m = re.match(r"^Timing \(master, wall clock\): DEM (\S+) s, coupling (\S+) s; "
@@ -161,25 +177,57 @@ def close_pairs(case, path):
     r = np.array(cloud["radius"])
     apart = gap >= agglomerate_gap(case)*np.minimum(r[i], r[j])
     held = gap[apart]
-    return [int((held < g).sum()) for g in NEAR_GAPS], (held[0] if len(held) else float("nan"))
+    return [int((held < g).sum()) for g in NEAR_GAPS], float(held[0] if len(held) else "nan")
+
+
+def close_pair_series(case):
+    """(write times [s], counts, closest gaps [m]) of every write of a
+    case: from the case's postProcessing/closePairs/closePairs.csv where
+    it holds the write with the same touching gap, else computed (about
+    10 s per write of 2e5 particles) and added to it"""
+    folder = os.path.join(case, "postProcessing", "closePairs")
+    path = os.path.join(folder, "closePairs.csv")
+    touching = "# touching below %r of the smaller radius" % agglomerate_gap(case)
+    header = "time,closestGap," + ",".join("within%gnm" % (g*1e9) for g in NEAR_GAPS)
+    known = {}
+    if os.path.exists(path):
+        with open(path) as f:
+            lines = f.read().splitlines()
+        if lines[:2] == [touching, header]:
+            for line in lines[2:]:
+                v = line.split(",")
+                known[v[0]] = ([int(k) for k in v[2:]], float(v[1]))
+    times, counts, closest = [], [], []
+    for write in particleCloud.write_times(case):
+        name = os.path.basename(write)
+        if name not in known:
+            known[name] = close_pairs(case, write)
+        times.append(particleCloud.time(write))
+        counts.append(known[name][0])
+        closest.append(known[name][1])
+    os.makedirs(folder, exist_ok=True)
+    with open(path + ".tmp", "w") as f:
+        f.write("%s\n%s\n" % (touching, header))
+        for name in sorted(known, key=float):
+            f.write("%s,%r,%s\n" % (name, known[name][1], ",".join(str(k) for k in known[name][0])))
+    os.replace(path + ".tmp", path)
+    return times, counts, closest
 
 
 def write_gaps(cases, resultsDir):
     """results/gaps.md (each case's last write) and gaps.png (against time)"""
     bounds = " | ".join("within %g nm" % (g*1e9) for g in NEAR_GAPS)
-    rows = ["| case | write time [µs] | closest gap of the pairs not touching [nm] | %s |" % bounds,
+    rows = ["| case | write time [µs] | closest gap below %g nm of the pairs not touching [nm] "
+            "| %s |" % (NEAR_GAPS[-1]*1e9, bounds),
             "|---|---|---|" + "---|"*len(NEAR_GAPS)]
     series = {}
     for case in cases:
         name = os.path.basename(case)
-        times, counts = [], []
-        for path in particleCloud.write_times(case):
-            n, closest = close_pairs(case, path)
-            times.append(particleCloud.time(path)*1e6)
-            counts.append(n)
+        times, counts, closest = close_pair_series(case)
+        times = [t*1e6 for t in times]
         series[name] = (times, counts)
         rows.append("| %s | %.4g | %s | %s |" % (
-            name, times[-1], "none" if closest != closest else "%.3g" % (closest*1e9),
+            name, times[-1], "none" if closest[-1] != closest[-1] else "%.3g" % (closest[-1]*1e9),
             " | ".join(str(k) for k in counts[-1])))
     with open(os.path.join(resultsDir, "gaps.md"), "w") as f:
         f.write("\n".join(rows) + "\n")
@@ -259,7 +307,7 @@ def main(studyDir, resultsDir):
     os.makedirs(resultsDir, exist_ok=True)
     rows = ["| case | end time [µs] | pair contacts formed per µs | pair contacts at the end | "
             "mean duration of ended pair contacts [µs] | wall contacts at the end | agglomerates | largest | "
-            "run time [s] | particle-steps/s per rank |",
+            "wall-clock run time [s] | particle-steps/s per rank |",
             "|---|---|---|---|---|---|---|---|---|---|"]
     series = {}
     for case in cases:

@@ -4,10 +4,10 @@ report uses for the pairs held apart near contact) against the pairs of
 all N^2/2 checked one by one:
 
   1. 1500 spheres of radius 0.10-0.20 um at random in 10 x 6 x 2 um^3
-     (17 % by volume),
-     z periodic with span 2 um (the minimum image in z: the only image
-     within the bound when the span is at least two cells): the same
-     pairs below each bound of 5, 20 and 100 nm, gaps equal to 1e-15 m.
+     (20 % by volume, overlaps counted), z periodic with span 2 um (the
+     minimum image in z: the only image within the bound when the span is
+     at least two cells): the same pairs below each bound of 5, 20 and
+     100 nm, each once, gaps equal to within 1e-15 m.
   2. Built by hand (radius 0.15 um, span 1.25 um): a pair across the
      periodic face 10 nm apart; a pair 49 nm apart inside the box with the
      bound 50 nm; a pair 51 nm apart (not found); three spheres in a row
@@ -15,7 +15,9 @@ all N^2/2 checked one by one:
      pair 10 nm apart with one sphere given one span up (z beyond the
      span: taken modulo the span); a pair across the face 39 nm apart
      with the lower sphere 0.33 um from the face (beyond two radii,
-     within 2 radii + the bound).
+     within 2 radii + the bound); a pair 10 nm apart across the face with
+     one sphere given below z = 0 (-0.05 um, as LIGGGHTS' atoms drift out
+     of the box between neighbour-list builds).
   3. A span shorter than two cells is refused (a pair would meet itself
      through two images).
 
@@ -52,7 +54,7 @@ def main():
         got = {(a, b): g for a, b, g in zip(i, j, gap)}
         across = sum(1 for a, b in expect
                      if abs(pos[a, 2] - pos[b, 2]) > span/2)
-        same = set(got) == set(expect) and \
+        same = len(i) == len(got) == len(expect) and set(got) == set(expect) and \
             all(abs(got[k] - expect[k]) < 1e-15 for k in expect) and \
             list(gap) == sorted(gap)
         print("random cloud, bound %g nm: %d pairs (%d across the periodic face), "
@@ -67,12 +69,14 @@ def main():
                     [7*u, 2*u, 0.6*u], [7*u + 2*R + 10e-9, 2*u, 0.6*u],
                     [7*u + 4*R + 20e-9, 2*u, 0.6*u],                    # a row
                     [9*u, 1*u, span + 0.1*u], [9*u, 1*u, 0.41*u],       # z beyond the span
-                    [11*u, 1*u, 0.33*u], [11*u, 1*u, span - 0.009*u]])  # across: 39 nm
+                    [11*u, 1*u, 0.33*u], [11*u, 1*u, span - 0.009*u],   # across: 39 nm
+                    [13*u, 1*u, -0.05*u], [13*u, 1*u, span - 0.36*u]])  # z below 0: 10 nm
     i, j, gap = pairGaps.close_pairs(pos, [R]*len(pos), span, 50e-9)
     got = {(a, b): g for a, b, g in zip(i, j, gap)}
     expect = {(0, 1): 10e-9, (6, 7): 10e-9, (7, 8): 10e-9, (2, 3): 49e-9, (9, 10): 10e-9,
-              (11, 12): 39e-9}
-    good = set(got) == set(expect) and all(abs(got[k] - expect[k]) < 1e-15 for k in expect)
+              (11, 12): 39e-9, (13, 14): 10e-9}
+    good = len(i) == len(got) and set(got) == set(expect) and \
+        all(abs(got[k] - expect[k]) < 1e-15 for k in expect)
     print("built by hand: %s: %s" % (sorted((k, "%.4g nm" % (g*1e9)) for k, g in got.items()),
                                      "ok" if good else "FAIL (expected %s)" % expect))
     ok = ok and good

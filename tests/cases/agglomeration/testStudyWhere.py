@@ -2,8 +2,8 @@
 """Where the study's report finds the agglomerates (studyReport.py,
 agglomerates()): a hand-built particle cloud in the slot coater's geometry
 (system/slotCoaterParameters of the tutorial: gap 50 um, slot 0..100 um,
-span 1.25 um), radius 0.15 um, every particle but one marked agglomerated
-as the run's analysis would:
+span 1.25 um), radius 0.15 um (but one of F), every particle but three
+marked agglomerated as the run's analysis would:
 
   A  a pair touching across the periodic span (z 0.1 um and span - 0.2 um),
      under the upstream lip: one agglomerate, centre z wrapped to 1.2 um
@@ -17,11 +17,14 @@ as the run's analysis would:
      1.5 nm; z 0.2 ... 1.103 um), wider than half the span: centre z
      0.6515 um; its end particles face each other across the periodic
      face 47 nm apart (1.25 - 0.903 - 0.3 um)
+  F  a particle of radius R and one of 1.5 R, 2 nm apart (touching would be
+     below 1 % of the smaller radius, 1.5 nm: not touching), neither
+     marked agglomerated
 
 Expected (by construction): 6 agglomerates with these members, centres
-(to 1e-12 m) and parts of the die; two pairs within 50 nm not touching
-(D's middle pair, 3 nm apart, and E's ends, 47 nm: the report's close
-pairs).
+(to 1e-12 m) and parts of the die; three pairs within 50 nm not
+touching (F, 2 nm apart, D's middle pair, 3 nm, and E's ends, 47 nm: the
+report's close pairs).
 
 usage: testStudyWhere.py colloidFoamDir workDir
 """
@@ -64,14 +67,16 @@ def main():
              (9, 120*u, 2*u, 0.3*u, 2), (10, 120.3*u, 2*u, 0.3*u, 2),
              (11, 120.6*u + 0.02*R, 2*u, 0.3*u, 2), (12, 120.9*u + 0.02*R, 2*u, 0.3*u, 2),  # D
              (13, 80*u, 5*u, 0.2*u, 4), (14, 80*u, 5*u, 0.501*u, 4),
-             (15, 80*u, 5*u, 0.802*u, 4), (16, 80*u, 5*u, 1.103*u, 4)]                      # E
+             (15, 80*u, 5*u, 0.802*u, 4), (16, 80*u, 5*u, 1.103*u, 4),
+             (17, 140*u, 3*u, 0.6*u, 1), (18, 140*u + 2.5*R + 2e-9, 3*u, 0.6*u, 1)]     # F
+    radius = {18: 1.5*R}                      # E
     cloud = os.path.join(work, "1e-05", "lagrangian", "particles")
     os.makedirs(cloud)
     write_list(os.path.join(cloud, "positions"), [(p[1], p[2], p[3], 0) for p in parts],
                "(%.15g %.15g %.15g) %d")
     write_list(os.path.join(cloud, "origId"), [(p[0],) for p in parts], "%d")
     write_list(os.path.join(cloud, "U"), [(0, 0, 0)]*len(parts), "(%g %g %g)")
-    write_list(os.path.join(cloud, "d"), [(2*R,)]*len(parts), "%.15g")
+    write_list(os.path.join(cloud, "d"), [(2*radius.get(p[0], R),) for p in parts], "%.15g")
     for name in ("nContacts", "touchingParticle", "touchingWall"):
         write_list(os.path.join(cloud, name), [(0,)]*len(parts), "%d")
     write_list(os.path.join(cloud, "agglomerateSize"), [(p[4],) for p in parts], "%d")
@@ -94,14 +99,34 @@ def main():
                                      "ok" if good else "FAIL (found %s)" % match))
         ok = ok and good
     # the pairs held near contact (close_pairs): within 50 nm and not
-    # touching, D's middle pair (0.02 R = 3 nm, beyond the touching gap of
-    # 0.01 R) and E's ends across the periodic face (47 nm); every other
-    # pair within 50 nm touches (gap 0 or E's 1 nm), B's fourth included
+    # touching, F (2 nm: beyond 1 % of the smaller radius, 1.5 nm), D's
+    # middle pair (0.02 R = 3 nm) and E's ends across the periodic face
+    # (47 nm); every other pair within 50 nm touches (gap 0 or E's 1 nm),
+    # B's fourth included
     counts, closest = studyReport.close_pairs(work, os.path.join(work, "1e-05"))
-    good = counts == [1, 1, 1, 2] and abs(closest - 0.02*R) < 1e-15
+    good = counts == [2, 2, 2, 3] and abs(closest - 2e-9) < 1e-15
     print("pairs not touching within 5, 10, 20, 50 nm: %s, closest %.4g nm (expected "
-          "[1, 1, 1, 2], %.4g nm): %s" % (counts, closest*1e9, 0.02*R*1e9,
+          "[2, 2, 2, 3], 2 nm): %s" % (counts, closest*1e9,
                                           "ok" if good else "FAIL"))
+    ok = ok and good
+
+    # the counts of each write kept in the case: read back, not computed
+    # again (a row changed by hand comes back changed), and computed again
+    # when the touching gap differs from the one they were counted with
+    times, series, _ = studyReport.close_pair_series(work)
+    kept = os.path.join(work, "postProcessing", "closePairs", "closePairs.csv")
+    with open(kept) as f:
+        lines = f.read().splitlines()
+    good = times == [1e-5] and series == [[2, 2, 2, 3]] and len(lines) == 3
+    with open(kept, "w") as f:
+        f.write("\n".join(lines[:2] + [lines[2].rsplit(",", 1)[0] + ",99"]) + "\n")
+    good = good and studyReport.close_pair_series(work)[1] == [[2, 2, 2, 99]]
+    with open(os.path.join(work, "constant", "couplingProperties"), "w") as f:
+        f.write("contactAnalysis\n{\n    agglomerateGap 0.025;\n}\n")
+    # 2.5 % of R (3.75 nm): D's middle pair (3 nm) and F (2 nm) touch
+    good = good and studyReport.close_pair_series(work)[1] == [[0, 0, 0, 1]]
+    print("close pairs kept in %s, reused, counted again for another touching gap: %s"
+          % (os.path.relpath(kept, work), "ok" if good else "FAIL"))
     ok = ok and good
     print("PASS" if ok else "FAIL")
     return 0 if ok else 1

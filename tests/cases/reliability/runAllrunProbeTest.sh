@@ -24,8 +24,10 @@
 #                     the stop advises the setting that applies (seconds)
 #   resumeAfterKill   ./Allrun killed (SIGKILL, its whole session) after
 #                     the write at 2e-7; ./Allrun -resume continues from
-#                     2e-7 to the end time 6e-7; -resume with nothing to
-#                     resume from stops saying so
+#                     2e-7 to the end time 6e-7, keeping the killed run's
+#                     log beside that of an earlier part resumed from the
+#                     same write; -resume with nothing to resume from
+#                     stops saying so
 set -u
 probe=$1
 work=$2
@@ -123,9 +125,16 @@ resumeAfterKill)
     wait "$pid" 2>/dev/null
     [ -f 2e-07/uniform/colloidCoupling ] || fail "the write at 2e-07 did not complete"
     [ ! -e 6e-07 ] || fail "the run was not killed before its end"
+    # as if resumed from 2e-07 once before: that part's log stays, the
+    # killed run's is kept beside it
+    echo "an earlier part" > log.colloidDEMFoam.to2e-07
     ./Allrun -resume > "$out" 2>&1 || fail "./Allrun -resume: exit $?"
     grep -q "^Resuming from time 2e-07:" log.colloidDEMFoam \
         || fail "not resumed from 2e-07: $(grep -m1 '^Resuming' log.colloidDEMFoam)"
+    [ "$(cat log.colloidDEMFoam.to2e-07)" = "an earlier part" ] \
+        || fail "the log of an earlier part (log.colloidDEMFoam.to2e-07) was overwritten"
+    grep -q "^Time = 2e-07" log.colloidDEMFoam.to2e-07.2 \
+        || fail "the killed run's log was not kept as log.colloidDEMFoam.to2e-07.2"
     [ -f 6e-07/lagrangian/particles/positions ] || fail "end time 6e-07 not written"
     later=$(ls -d [0-9]* | grep -E '^[-+.0-9eE]+$' | awk '$1 > 6.000001e-07')
     [ -z "$later" ] || fail "ran past the end time 6e-07 of the run resumed: $later"
