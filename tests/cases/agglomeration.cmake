@@ -84,33 +84,33 @@ set_tests_properties(case.agglomeration.barrier PROPERTIES
     TIMEOUT 60 LABELS "case;agglomeration" ENVIRONMENT PYTHONDONTWRITEBYTECODE=1
     PASS_REGULAR_EXPRESSION "PASS")
 
+# The study report's parts on hand-built input (Debian's python3: numpy
+# and matplotlib): agglomeration.<name>, <script> colloidFoamDir workDir,
+# passing on "PASS"
+function(add_study_report_test name script timeout)
+    add_test(NAME agglomeration.${name}
+        COMMAND /usr/bin/python3 ${agglomerationDir}/${script} ${CMAKE_SOURCE_DIR}
+                ${agglomerationWork}/${name})
+    set_tests_properties(agglomeration.${name} PROPERTIES
+        TIMEOUT ${timeout} LABELS "unit;agglomeration" ENVIRONMENT PYTHONDONTWRITEBYTECODE=1
+        PASS_REGULAR_EXPRESSION "PASS")
+endfunction()
+
 # agglomeration.studyWhere: where the study's report finds agglomerates,
 # on a hand-built cloud (testStudyWhere.py): members across the periodic
-# span, the touching gap, centres and the parts of the die
-add_test(NAME agglomeration.studyWhere
-    COMMAND /usr/bin/python3 ${agglomerationDir}/testStudyWhere.py ${CMAKE_SOURCE_DIR}
-            ${agglomerationWork}/studyWhere)
-set_tests_properties(agglomeration.studyWhere PROPERTIES
-    TIMEOUT 30 LABELS "unit;agglomeration" ENVIRONMENT PYTHONDONTWRITEBYTECODE=1
-    PASS_REGULAR_EXPRESSION "PASS")
+# span, the touching gap, centres and the parts of the die, the pairs held
+# near contact and their counts kept in the case
+add_study_report_test(studyWhere testStudyWhere.py 30)
 
 # agglomeration.pairGaps: the close pairs of a cloud that the study's
 # report counts (src/python/pairGaps.py, a grid of cells with the periodic
-# span) against all pairs checked one by one (testPairGaps.py)
-add_test(NAME agglomeration.pairGaps
-    COMMAND /usr/bin/python3 ${agglomerationDir}/testPairGaps.py ${CMAKE_SOURCE_DIR})
-set_tests_properties(agglomeration.pairGaps PROPERTIES
-    TIMEOUT 60 LABELS "unit;agglomeration" ENVIRONMENT PYTHONDONTWRITEBYTECODE=1
-    PASS_REGULAR_EXPRESSION "PASS")
+# span) against all pairs checked one by one (testPairGaps.py; its work
+# folder is not used)
+add_study_report_test(pairGaps testPairGaps.py 60)
 
 # agglomeration.studyCost: the run time and rate the study's report gives
 # a resumed run: its parts' logs summed (testStudyCost.py, figures by hand)
-add_test(NAME agglomeration.studyCost
-    COMMAND /usr/bin/python3 ${agglomerationDir}/testStudyCost.py ${CMAKE_SOURCE_DIR}
-            ${agglomerationWork}/studyCost)
-set_tests_properties(agglomeration.studyCost PROPERTIES
-    TIMEOUT 30 LABELS "unit;agglomeration" ENVIRONMENT PYTHONDONTWRITEBYTECODE=1
-    PASS_REGULAR_EXPRESSION "PASS")
+add_study_report_test(studyCost testStudyCost.py 30)
 
 # agglomeration.study: the study's driver on a copy of the slot coater (one
 # case, two coupling steps at the study's size) and its report
