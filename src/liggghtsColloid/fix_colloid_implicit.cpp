@@ -23,9 +23,12 @@
 #include "fix_property_global.h"
 #include "colloid_drag_properties.h"
 #include "colloid_units.h"
+#include "counterRandom.H"
 
 using namespace LAMMPS_NS;
 using namespace FixConst;
+using colloid::counterRandom::mix64;
+using colloid::counterRandom::standardNormal;
 
 namespace {
 
@@ -261,24 +264,6 @@ void FixColloidImplicit::findBrownianMotion()
     seed_ = static_cast<unsigned long>(seed);
 }
 
-namespace {
-
-uint64_t mix64(uint64_t z)
-{
-    z += 0x9e3779b97f4a7c15ULL;
-    z = (z ^ (z >> 30))*0xbf58476d1ce4e5b9ULL;
-    z = (z ^ (z >> 27))*0x94d049bb133111ebULL;
-    return z ^ (z >> 31);
-}
-
-// a uniform number in (0, 1] from a 64-bit hash
-double unit(uint64_t z)
-{
-    return (static_cast<double>(z >> 11) + 1.0)*(1.0/9007199254740992.0);
-}
-
-}
-
 // The impulse R of atom tag over the step h: from a hash of the seed, the
 // atom's id, the step number and the kind of solve, so that a run gives
 // the same numbers on any number of ranks and after a restart
@@ -290,12 +275,7 @@ void FixColloidImplicit::thermalImpulse(int tag, double K, double h, double *R) 
     key = mix64(key ^ static_cast<uint64_t>(tag));
     key = mix64(key ^ static_cast<uint64_t>(update->ntimestep));
     key = mix64(key ^ phase);
-    const double twoPi = 6.283185307179586;
-    for (int k = 0; k < 3; k++)
-    {
-        const uint64_t a = mix64(key + 2*k), b = mix64(key + 2*k + 1);
-        R[k] = sigma*std::sqrt(-2.0*std::log(unit(a)))*std::cos(twoPi*unit(b));
-    }
+    for (int k = 0; k < 3; k++) R[k] = sigma*standardNormal(mix64(key + k));
 }
 
 // The lubrication noise xi of the pair of atoms a and b over the step h
@@ -312,8 +292,7 @@ double FixColloidImplicit::pairThermalImpulse(int a, int b, double c, double h) 
     key = mix64(key ^ ((lo << 32) | hi));
     key = mix64(key ^ static_cast<uint64_t>(update->ntimestep));
     key = mix64(key ^ phase);
-    const uint64_t u1 = mix64(key), u2 = mix64(key + 1);
-    return std::sqrt(2.0*c*kT_*h)*std::sqrt(-2.0*std::log(unit(u1)))*std::cos(6.283185307179586*unit(u2));
+    return std::sqrt(2.0*c*kT_*h)*standardNormal(mix64(key));
 }
 
 /* ---------------------------------------------------------------------- */
