@@ -89,8 +89,10 @@ set_tests_properties(case.coupling.interpolate PROPERTIES
 
 # locate: particleLocator (incremental walk + octree fallback) returns the
 #   cell of OpenFOAM's global search for 10^5 points on the tet channel and
-#   on a concave L-shaped mesh (builds its small test program with wmake).
+#   on a concave L-shaped mesh, as built and warped, and the wall distance
+#   of a search over all wall faces (builds its small test program with
+#   wmake).
 add_test(NAME case.coupling.locate
     COMMAND ${couplingDir}/runMeshProgramTest.sh locate ${couplingWork}/locate)
 set_tests_properties(case.coupling.locate PROPERTIES
-    TIMEOUT 120 LABELS "case;coupling")
+    TIMEOUT 120 LABELS "case;coupling;throughput")

@@ -12,6 +12,11 @@ Foam::particleLocator::particleLocator(const polyMesh& mesh)
     planeStart_(mesh.nCells() + 1, 0),
     convexCell_(mesh.nCells(), true),
     wallLowerBound_(mesh.nCells(), GREAT),
+    cellReach_(mesh.nCells(), 0),
+    wallPlanes_(),
+    wallWarp_(),
+    wallCandidates_(mesh.nCells()),
+    wallCandidateRange_(mesh.nCells(), -1),
     nGlobalSearches_(0)
 {
     // Convex cells bounded by planar faces: every point of the cell on the
@@ -114,9 +119,30 @@ Foam::particleLocator::particleLocator(const polyMesh& mesh)
             {
                 reach = max(reach, mag(pts[pointi] - C[celli]));
             }
+            cellReach_[celli] = reach;
             const pointIndexHit hit = wallTree_->findNearest(C[celli], GREAT);
             wallLowerBound_[celli] =
                 hit.hit() ? max(scalar(0), mag(hit.hitPoint() - C[celli]) - reach) : GREAT;
+        }
+
+        wallPlanes_.setSize(wallFaces.size());
+        wallWarp_.setSize(wallFaces.size(), 0);
+        forAll(wallFaces, k)
+        {
+            const label facei = wallFaces[k];
+            cellPlane& plane = wallPlanes_[k];
+            plane.centre = Cf[facei];
+            plane.normal = Sf[facei]/mag(Sf[facei]);
+            plane.face = facei;
+            plane.across = -1;
+            for (const label pointi : faces[facei])
+            {
+                wallWarp_[k] = max
+                (
+                    wallWarp_[k],
+                    mag((pts[pointi] - plane.centre) & plane.normal)
+                );
+            }
         }
     }
 }
@@ -267,6 +293,38 @@ Foam::scalar Foam::particleLocator::wallDistance
 ) const
 {
     if (!wallTree_.valid() || wallLowerBound_[celli] > maxDist)
+    {
+        return GREAT;
+    }
+
+    // Every wall face within maxDist of a point of this cell is within
+    // reach + maxDist of its centre, so among the candidates; if p is
+    // further than maxDist from each candidate's plane (less its warp),
+    // no wall face is within maxDist of p
+    if (wallCandidateRange_[celli] < maxDist)
+    {
+        const scalar halfWidth = cellReach_[celli] + maxDist;
+        const point& c = mesh_.cellCentres()[celli];
+        wallCandidates_[celli] = wallTree_->findBox
+        (
+            treeBoundBox
+            (
+                c - vector::uniform(halfWidth), c + vector::uniform(halfWidth)
+            )
+        );
+        wallCandidateRange_[celli] = maxDist;
+    }
+    bool near = false;
+    for (const label k : wallCandidates_[celli])
+    {
+        const cellPlane& plane = wallPlanes_[k];
+        if (mag((p - plane.centre) & plane.normal) - wallWarp_[k] <= maxDist)
+        {
+            near = true;
+            break;
+        }
+    }
+    if (!near)
     {
         return GREAT;
     }

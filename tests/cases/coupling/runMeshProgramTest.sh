@@ -5,7 +5,9 @@
 #   locate       particleLocator against OpenFOAM's global search
 #                (polyMesh::findCell) for 10^5 points each, on the tet
 #                channel (convex: the incremental walk must never give up
-#                for a point inside) and on a concave L-shaped hex mesh;
+#                for a point inside) and on a concave L-shaped hex mesh,
+#                as built and with its points moved (warped faces), and
+#                the wall distances against all wall faces;
 #   interpolate  cellPointInterpolator against OpenFOAM's
 #                interpolationCellPoint at 10^5 random points each, on the
 #                channel's hex, tet and polyhedral (dual of the tet)
@@ -41,7 +43,11 @@ channelMesh()
         case $2 in
             hex) blockMesh > log.blockMesh 2>&1 ;;
             *)   python3 "$here/makeTetMesh.py" channel.msh 10 20 5
-                 gmshToFoam channel.msh > log.gmshToFoam 2>&1 ;;
+                 gmshToFoam channel.msh > log.gmshToFoam 2>&1
+                 # gmshToFoam makes every patch a plain patch: the
+                 # channel's walls (the locator's wall distances) are walls
+                 sed -i '/^ *walls$/,/}/s/^\( *type *\)patch;/\1wall;/' \
+                     constant/polyMesh/boundary ;;
         esac
         if [ "$2" = polyDual ]
         then
@@ -63,6 +69,17 @@ then
     echo "L-shaped hex mesh:"
     "$work/bin/locateTest" -case "$work/lShape" > "$work/lShape/log.locateTest" 2>&1 || status=1
     tail -2 "$work/lShape/log.locateTest"
+
+    # the same with every point moved up to 1 um (a fifth of a cell):
+    # warped faces, walls included, and non-convex cells
+    cp -r "$here/locate/lShape" "$work/lShapeWarped"
+    (
+        cd "$work/lShapeWarped" && blockMesh > log.blockMesh 2>&1 &&
+        python3 "$here/locate/perturbPoints.py" . 1e-6 > log.perturbPoints
+    )
+    echo "L-shaped mesh, warped:"
+    "$work/bin/locateTest" -case "$work/lShapeWarped" > "$work/lShapeWarped/log.locateTest" 2>&1 || status=1
+    tail -2 "$work/lShapeWarped/log.locateTest"
 else
     for mesh in hex tet polyDual
     do

@@ -126,5 +126,11 @@ int main(int argc, char *argv[])
         << ", largest difference " << maxDiff << " of max |U|" << nl
         << ((nMismatch || fewInside) ? "FAIL" : "PASS") << endl;
 
-    return (nMismatch || fewInside) ? 1 : 0;
+    // (argList's destructor ends the program with status 0: a failure
+    // leaves through FatalError, status 1)
+    if (nMismatch || fewInside)
+    {
+        FatalErrorInFunction << "interpolateTest failed" << exit(FatalError);
+    }
+    return 0;
 }

@@ -14,6 +14,16 @@ Description
     for every point inside the mesh: the locator's octree searches must be
     exactly the points outside.
 
+    Wall distances: at every 10th point inside, for ranges of 0.3, 0.05,
+    0.4 and 1.5 cells (in that order: the locator keeps per cell the wall
+    faces for the longest range asked so far, and must find more when a
+    longer one is asked), particleLocator::wallDistance must equal the distance
+    to the nearest face of the wall patches found by going over all of
+    them (face::nearestPoint), to 1e-9 of a cell, or say "none within the
+    range" exactly when that distance exceeds the range (points within
+    1e-9 of a cell of the range itself are not counted: either answer is
+    right there).
+
 \*---------------------------------------------------------------------------*/
 
 #include "argList.H"
@@ -21,6 +31,7 @@ Description
 #include "polyMesh.H"
 #include "Random.H"
 #include "particleLocator.H"
+#include "wallPolyPatch.H"
 
 using namespace Foam;
 
@@ -40,6 +51,22 @@ int main(int argc, char *argv[])
 
     const boundBox bb(mesh.points());
     const scalar h = Foam::cbrt(bb.volume()/mesh.nCells());
+
+    // Every wall face, for the reference distances
+    DynamicList<label> wallFaces;
+    for (const polyPatch& pp : mesh.boundaryMesh())
+    {
+        if (isA<wallPolyPatch>(pp))
+        {
+            forAll(pp, i)
+            {
+                wallFaces.append(pp.start() + i);
+            }
+        }
+    }
+    label nWallChecks = 0;
+    label nWallNear = 0;
+    label nWallMismatch = 0;
 
     point p = mesh.cellCentres()[0];
     label hint = 0;
@@ -70,6 +97,39 @@ int main(int argc, char *argv[])
                     << ", global search " << expected << endl;
             }
         }
+        if (expected >= 0 && found == expected && i % 10 == 0)
+        {
+            scalar nearest = GREAT;
+            for (const label facei : wallFaces)
+            {
+                nearest = min
+                (
+                    nearest,
+                    mesh.faces()[facei].nearestPoint(q, mesh.points()).distance()
+                );
+            }
+            for (const scalar range : {0.3*h, 0.05*h, 0.4*h, 1.5*h})
+            {
+                if (mag(nearest - range) < 1e-9*h)
+                {
+                    continue;
+                }
+                ++nWallChecks;
+                const scalar reference = nearest <= range ? nearest : GREAT;
+                nWallNear += nearest <= range;
+                const scalar d = locator.wallDistance(q, found, range);
+                if (mag(d - reference) > 1e-9*h)
+                {
+                    ++nWallMismatch;
+                    if (nWallMismatch <= 10)
+                    {
+                        Info<< "wall distance at " << q << " within "
+                            << range << ": " << d << ", over all wall faces "
+                            << reference << endl;
+                    }
+                }
+            }
+        }
         if (expected >= 0)
         {
             ++nInside;
@@ -89,7 +149,26 @@ int main(int argc, char *argv[])
         Info<< "walks gave up " << nOctree - (n - nInside)
             << " times in a convex domain" << nl;
     }
-    Info<< ((nMismatch || walksFailed) ? "FAIL" : "PASS") << endl;
+    Info<< "wall distances checked " << nWallChecks << " (" << nWallNear
+        << " within the range), mismatches " << nWallMismatch << nl;
+    // the check must have seen both answers
+    const bool wallUntested =
+        wallFaces.empty() || nWallNear == 0 || nWallNear == nWallChecks;
+    if (wallUntested)
+    {
+        Info<< "the wall distances were not tested: " << wallFaces.size()
+            << " wall faces, " << nWallNear << " of " << nWallChecks
+            << " checks near a wall" << nl;
+    }
+    const bool failed =
+        nMismatch || walksFailed || nWallMismatch || wallUntested;
+    Info<< (failed ? "FAIL" : "PASS") << endl;
 
-    return (nMismatch || walksFailed) ? 1 : 0;
+    // (argList's destructor ends the program with status 0: a failure
+    // leaves through FatalError, status 1)
+    if (failed)
+    {
+        FatalErrorInFunction << "locateTest failed" << exit(FatalError);
+    }
+    return 0;
 }
