@@ -62,13 +62,13 @@ then
     channelMesh "$work/tet" tet
     echo "tet channel:"
     "$work/bin/locateTest" -convex -case "$work/tet" > "$work/tet/log.locateTest" 2>&1 || status=1
-    tail -2 "$work/tet/log.locateTest"
+    grep -E "^(points|wall distances|walks|the wall|PASS|FAIL)" "$work/tet/log.locateTest" || true
 
     cp -r "$here/locate/lShape" "$work/lShape"
     (cd "$work/lShape" && blockMesh > log.blockMesh 2>&1)
     echo "L-shaped hex mesh:"
     "$work/bin/locateTest" -case "$work/lShape" > "$work/lShape/log.locateTest" 2>&1 || status=1
-    tail -2 "$work/lShape/log.locateTest"
+    grep -E "^(points|wall distances|walks|the wall|PASS|FAIL)" "$work/lShape/log.locateTest" || true
 
     # the same with every point moved up to 1 um (a fifth of a cell):
     # warped faces, walls included, and non-convex cells
@@ -79,7 +79,7 @@ then
     )
     echo "L-shaped mesh, warped:"
     "$work/bin/locateTest" -case "$work/lShapeWarped" > "$work/lShapeWarped/log.locateTest" 2>&1 || status=1
-    tail -2 "$work/lShapeWarped/log.locateTest"
+    grep -E "^(points|wall distances|walks|the wall|PASS|FAIL)" "$work/lShapeWarped/log.locateTest" || true
 else
     for mesh in hex tet polyDual
     do
@@ -88,7 +88,7 @@ else
         (cd "$work/$mesh" && transformPoints -scale '(1e4 1e4 1e4)' > log.transformPoints 2>&1)
         echo "$mesh mesh:"
         "$work/bin/interpolateTest" -case "$work/$mesh" > "$work/$mesh/log.interpolateTest" 2>&1 || status=1
-        tail -2 "$work/$mesh/log.interpolateTest"
+        grep -E "^(points|wall distances|walks|the wall|PASS|FAIL)" "$work/$mesh/log.interpolateTest" || true
     done
 fi
 
