@@ -75,6 +75,7 @@
 #ifndef COLLOID_FIX_COLLOID_IMPLICIT_H
 #define COLLOID_FIX_COLLOID_IMPLICIT_H
 
+#include <cstdint>
 #include <vector>
 #include "fix.h"
 
@@ -134,8 +135,9 @@ private:
     void findDragProperties();
     int nWithoutDrag() const;
     void findBrownianMotion();
-    void thermalImpulse(int tag, double K, double h, double *R) const;
-    double pairThermalImpulse(int a, int b, double c, double h) const;
+    uint64_t solveKey(uint64_t stream, double h) const;
+    void thermalImpulse(uint64_t key, int tag, double K, double h, double *R) const;
+    double pairThermalImpulse(uint64_t key, int a, int b, double c, double h) const;
     void findGroups();
     void solvePair(const PairTerm & t);
     void solveDense(const int *members, int n, const int *pairIdx, int nPairs);
@@ -160,8 +162,11 @@ private:
     int integrated_;
 
     // Brownian motion with the drag (property/global brownianTemperature
-    // [K] and brownianSeed): k_B T [run units], 0 when off; the seed; the
-    // random impulses of this step's coupled particles, 3 per atom
+    // [K] and brownianSeed): k_B T [run units], 0 when off; the seed and
+    // its two streams (the atoms' impulses, the pairs' noise); the random
+    // impulses of this solve, 3 per atom
+    static constexpr uint64_t atomStream = 0;
+    static constexpr uint64_t pairStream = 0x5bd1e9955bd1e995ULL;
     double kT_;
     unsigned long seed_;
     std::vector<double> thermal_;

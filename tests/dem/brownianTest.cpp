@@ -15,7 +15,9 @@
       coefficient is exact at any step; positions sampled at steps of
       5 tau add a term of order dt^2/t: +6.6 % over 100 tau.) The
       spheres move independently: their mean displacement, each
-      component, within 4 standard errors sqrt(MSD/(3 N)) of 0;
+      component, within 4 standard errors sqrt(MSD/(3 N)) of 0, and the
+      correlations of the components of a sphere and of spheres with
+      consecutive ids within 5 standard errors (1/sqrt(N)) of 0;
     equipartition: dt = 0.01, 0.1, 1 and 5 tau; after 10 tau, 10 samples
       2 tau apart: the half-step velocities (the ones that move the
       spheres) have <w_x^2> = k_B T/m at every step, the written ones the
@@ -200,6 +202,27 @@ TEST(brownian, meanSquareDisplacement)
         const double standardError = std::sqrt(msd/(3*run.nAtoms()));
         for (int k = 0; k < 3; k++)
             EXPECT_LT(std::fabs(mean[k]), 4*standardError) << "mean displacement " << k << ", dt = " << a << " tau";
+        // no correlation between the components of one sphere's
+        // displacement, nor between those of spheres with consecutive ids
+        // (whose random numbers are neighbours in the step's stream)
+        const long n = run.nAtoms();
+        for (int p = 0; p < 3; p++)
+            for (int q = 0; q < 3; q++)
+            {
+                double same = 0, next = 0;
+                for (long i = 0; i < n; i++)
+                {
+                    const double d = x1[3*i + p] - x0[3*i + p];
+                    same += d*(x1[3*i + q] - x0[3*i + q]);
+                    if (i + 1 < n) next += d*(x1[3*(i + 1) + q] - x0[3*(i + 1) + q]);
+                }
+                const double variance = msd/3;
+                if (p != q)
+                    EXPECT_LT(std::fabs(same/n/variance), 5/std::sqrt(double(n)))
+                        << "components " << p << ", " << q << " of a sphere, dt = " << a << " tau";
+                EXPECT_LT(std::fabs(next/(n - 1)/variance), 5/std::sqrt(double(n - 1)))
+                    << "components " << p << ", " << q << " of consecutive ids, dt = " << a << " tau";
+            }
         const double t = steps*dt;
         const double reference = 6*D*(t - tau*(1 - std::exp(-t/tau)));
         std::printf("dt = %g tau: MSD %.6g um^2 after %g tau, Langevin %.6g um^2 (%+.2f %%)\n",

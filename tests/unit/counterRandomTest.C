@@ -102,21 +102,23 @@ TEST(counterRandom, uniformOpenAndFiniteTails)
     EXPECT_NEAR(most, -least, 1e-8);
 }
 
-// Hashed consecutive counters as the Brownian forces use them (one key,
-// k = 0, 1, 2, ...): mean, variance, kurtosis and the probability beyond 3
-// standard deviations within 5 standard errors of the normal values; the
-// sample's distribution within the Kolmogorov-Smirnov bound of 1 % false
-// alarms (1.63/sqrt(n))
+// Consecutive counters of one key as the Brownian forces use them
+// (counterWord(key, k), k = 0, 1, 2, ...; an atom's three numbers are
+// neighbours): mean, variance, kurtosis, the probability beyond 3 standard
+// deviations and the correlation of neighbours within 5 standard errors of
+// the normal values; the sample's distribution within the
+// Kolmogorov-Smirnov bound of 1 % false alarms (1.63/sqrt(n))
 TEST(counterRandom, normalSampleFromHashedCounters)
 {
     const std::size_t n = 2000000;
     std::vector<double> x(n);
     const std::uint64_t key = mix64(mix64(12345) ^ 678);
-    double sum = 0, sum2 = 0, sum4 = 0;
+    double sum = 0, sum2 = 0, sum4 = 0, sumNeighbours = 0;
     std::size_t beyond3 = 0;
     for (std::size_t k = 0; k < n; ++k)
     {
-        x[k] = standardNormal(mix64(key + k));
+        x[k] = standardNormal(counterWord(key, k));
+        if (k > 0) sumNeighbours += x[k]*x[k - 1];
         sum += x[k];
         sum2 += x[k]*x[k];
         sum4 += std::pow(x[k], 4);
@@ -127,6 +129,7 @@ TEST(counterRandom, normalSampleFromHashedCounters)
     EXPECT_NEAR(mean, 0.0, 5/std::sqrt(double(n)));
     EXPECT_NEAR(variance, 1.0, 5*std::sqrt(2.0/n));
     EXPECT_NEAR(sum4/n, 3.0, 5*std::sqrt(96.0/n));     // var(x^4) = 105 - 9
+    EXPECT_NEAR(sumNeighbours/(n - 1), 0.0, 5/std::sqrt(double(n - 1)));
     const double pBeyond = 2*normalCdf(-3);
     EXPECT_NEAR
     (
