@@ -288,15 +288,17 @@ void FixColloidImplicit::thermalImpulse(uint64_t key, int tag, double K, double 
 }
 
 // The lubrication noise xi of the pair of atoms a and b over the step h
-// (resistance c), from the counter of both ids (in either order: a pair
-// across ranks draws the same number on both) of the solve's pair key;
+// (resistance c), from the solve's pair key and a counter of both ids (in
+// either order: a pair across ranks draws the same number on both);
 // positive xi pushes the two apart. A wall contact: b = -1 - k for the
-// atom's k-th wall contact of the step.
+// atom's k-th wall contact of the step (as 32 bits 2^32 - 1 - k, above
+// every id). The ids' word (lo << 32) | hi is hashed into the counter:
+// the pairs of one atom would otherwise differ only in their high 32 bits.
 double FixColloidImplicit::pairThermalImpulse(uint64_t key, int a, int b, double c, double h) const
 {
     const uint64_t lo = static_cast<uint32_t>(std::min(a, b));
     const uint64_t hi = static_cast<uint32_t>(std::max(a, b));
-    return std::sqrt(2.0*c*kT_*h)*standardNormal(counterWord(key, (lo << 32) | hi));
+    return std::sqrt(2.0*c*kT_*h)*standardNormal(counterWord(key, mix64((lo << 32) | hi)));
 }
 
 /* ---------------------------------------------------------------------- */

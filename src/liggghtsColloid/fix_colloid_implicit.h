@@ -135,9 +135,9 @@ private:
     void findDragProperties();
     int nWithoutDrag() const;
     void findBrownianMotion();
-    uint64_t solveKey(uint64_t stream, double h) const;
-    void thermalImpulse(uint64_t key, int tag, double K, double h, double *R) const;
-    double pairThermalImpulse(uint64_t key, int a, int b, double c, double h) const;
+    std::uint64_t solveKey(std::uint64_t stream, double h) const;
+    void thermalImpulse(std::uint64_t key, int tag, double K, double h, double *R) const;
+    double pairThermalImpulse(std::uint64_t key, int a, int b, double c, double h) const;
     void findGroups();
     void solvePair(const PairTerm & t);
     void solveDense(const int *members, int n, const int *pairIdx, int nPairs);
@@ -165,8 +165,8 @@ private:
     // [K] and brownianSeed): k_B T [run units], 0 when off; the seed and
     // its two streams (the atoms' impulses, the pairs' noise); the random
     // impulses of this solve, 3 per atom
-    static constexpr uint64_t atomStream = 0;
-    static constexpr uint64_t pairStream = 0x5bd1e9955bd1e995ULL;
+    static constexpr std::uint64_t atomStream = 0;
+    static constexpr std::uint64_t pairStream = 0x5bd1e9955bd1e995ULL;
     double kT_;
     unsigned long seed_;
     std::vector<double> thermal_;

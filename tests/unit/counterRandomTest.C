@@ -103,22 +103,24 @@ TEST(counterRandom, uniformOpenAndFiniteTails)
 }
 
 // Consecutive counters of one key as the Brownian forces use them
-// (counterWord(key, k), k = 0, 1, 2, ...; an atom's three numbers are
-// neighbours): mean, variance, kurtosis, the probability beyond 3 standard
-// deviations and the correlation of neighbours within 5 standard errors of
-// the normal values; the sample's distribution within the
-// Kolmogorov-Smirnov bound of 1 % false alarms (1.63/sqrt(n))
+// (counterWord(key, k), k = 0, 1, 2, ...; atom i's three numbers are 4 i,
+// 4 i + 1, 4 i + 2): mean, variance, kurtosis, the probability beyond 3
+// standard deviations and the correlations at lags 1, 2 and 4 within 5
+// standard errors of the normal values; the sample's distribution within
+// the Kolmogorov-Smirnov bound of 1 % false alarms (1.63/sqrt(n))
 TEST(counterRandom, normalSampleFromHashedCounters)
 {
     const std::size_t n = 2000000;
     std::vector<double> x(n);
     const std::uint64_t key = mix64(mix64(12345) ^ 678);
-    double sum = 0, sum2 = 0, sum4 = 0, sumNeighbours = 0;
+    const std::size_t lags[3] = {1, 2, 4};
+    double sum = 0, sum2 = 0, sum4 = 0, sumLag[3] = {0, 0, 0};
     std::size_t beyond3 = 0;
     for (std::size_t k = 0; k < n; ++k)
     {
         x[k] = standardNormal(counterWord(key, k));
-        if (k > 0) sumNeighbours += x[k]*x[k - 1];
+        for (int l = 0; l < 3; ++l)
+            if (k >= lags[l]) sumLag[l] += x[k]*x[k - lags[l]];
         sum += x[k];
         sum2 += x[k]*x[k];
         sum4 += std::pow(x[k], 4);
@@ -129,7 +131,9 @@ TEST(counterRandom, normalSampleFromHashedCounters)
     EXPECT_NEAR(mean, 0.0, 5/std::sqrt(double(n)));
     EXPECT_NEAR(variance, 1.0, 5*std::sqrt(2.0/n));
     EXPECT_NEAR(sum4/n, 3.0, 5*std::sqrt(96.0/n));     // var(x^4) = 105 - 9
-    EXPECT_NEAR(sumNeighbours/(n - 1), 0.0, 5/std::sqrt(double(n - 1)));
+    for (int l = 0; l < 3; ++l)
+        EXPECT_NEAR(sumLag[l]/(n - lags[l]), 0.0, 5/std::sqrt(double(n - lags[l])))
+            << "lag " << lags[l];
     const double pBeyond = 2*normalCdf(-3);
     EXPECT_NEAR
     (
@@ -144,4 +148,31 @@ TEST(counterRandom, normalSampleFromHashedCounters)
         ks = std::max(ks, std::max(F - double(k)/n, double(k + 1)/n - F));
     }
     EXPECT_LT(ks, 1.63/std::sqrt(double(n)));
+}
+
+
+// The streams of two solves' keys are apart: the keys of consecutive steps
+// (as the Brownian forces hash them) give uncorrelated numbers at the same
+// and at shifted counters, and two keys j gamma apart (SplitMix64's
+// states, which a sum key + n gamma would read shifted by j) do not repeat
+// each other's words: the correlation within 5 standard errors of 0
+TEST(counterRandom, streamsOfKeysApart)
+{
+    const std::uint64_t gamma = 0x9e3779b97f4a7c15ULL;
+    const std::size_t n = 200000;
+    const std::uint64_t key = mix64(mix64(4711) ^ 1000);
+    const std::uint64_t nextStep = mix64(mix64(4711) ^ 1001);
+    const std::uint64_t shiftedKey = key + 7*gamma;
+    double same = 0, shifted = 0, apart = 0;
+    for (std::size_t k = 0; k < n; ++k)
+    {
+        const double a = standardNormal(counterWord(key, k + 7));
+        same += a*standardNormal(counterWord(nextStep, k + 7));
+        shifted += a*standardNormal(counterWord(nextStep, k));
+        apart += a*standardNormal(counterWord(shiftedKey, k));
+    }
+    const double bound = 5/std::sqrt(double(n));
+    EXPECT_NEAR(same/n, 0.0, bound) << "the next step's key, same counter";
+    EXPECT_NEAR(shifted/n, 0.0, bound) << "the next step's key, shifted counter";
+    EXPECT_NEAR(apart/n, 0.0, bound) << "a key 7 gamma apart";
 }
