@@ -26,8 +26,10 @@ set_tests_properties(case.errorVsCost.settlingStudy PROPERTIES
 # errorVsCost.startupReport: colloidDEMFoam prints at start-up the error
 #   the settling study measured at the case's DEM step, its run time and
 #   the cheapest rung within 1 % and 5 %, as errorStudy.csv gives them;
-#   "not measured" off the ladder, "none measured" without a study
-#   (checkStartupReport.py).
+#   "not measured" off the ladder, "none measured" without a study and
+#   where the case is not the study's context (another particle density,
+#   another drag law, a context entry the case lacks: the entry and both
+#   values named) (checkStartupReport.py).
 set_tests_properties(case.errorVsCost.settlingStudy PROPERTIES
     FIXTURES_SETUP errorVsCostSettlingStudy)
 add_test(NAME case.errorVsCost.startupReport
@@ -37,7 +39,8 @@ set_tests_properties(case.errorVsCost.startupReport PROPERTIES
     TIMEOUT 120 LABELS "case;errorVsCost" FIXTURES_REQUIRED errorVsCostSettlingStudy
     ENVIRONMENT PYTHONDONTWRITEBYTECODE=1)
 
-foreach(variant shortLadder badLimit missingEntry variableEntry badExpression missingQuantity)
+foreach(variant shortLadder badLimit missingEntry variableEntry badExpression missingQuantity
+        badContext missingContext variableContext changedContext)
     add_test(NAME case.errorVsCost.badInput.${variant}
         COMMAND ${errorVsCostDir}/runStudyBadInput.sh ${variant} ${errorVsCostWork}/badInput_${variant})
     set_tests_properties(case.errorVsCost.badInput.${variant} PROPERTIES

@@ -35,15 +35,13 @@ static bool numberOf(const entry& e, scalar& value)
 }
 
 
-// The number an entry of a case's dictionary holds; otherwise false, with
-// why not
-static bool caseNumber
+// An entry of a case's dictionary; otherwise nullptr, with why not
+static const entry* caseEntry
 (
     const fileName& caseDir,
     const fileName& file,
     const word& entryPath,
     HashPtrTable<dictionary, fileName>& files,
-    scalar& value,
     string& whyNot
 )
 {
@@ -60,19 +58,132 @@ static bool caseNumber
     if (!dict)
     {
         whyNot = "this case has no " + file;
-        return false;
+        return nullptr;
     }
     // '/' scoping, e.g. DEM/timeStep or SIMPLE/residualControl/p
     const entry* e = dict->findScoped(entryPath, keyType::LITERAL);
     if (!e)
     {
         whyNot = file + " has no entry " + entryPath;
+    }
+    return e;
+}
+
+
+// The number an entry of a case's dictionary holds; otherwise false, with
+// why not
+static bool caseNumber
+(
+    const fileName& caseDir,
+    const fileName& file,
+    const word& entryPath,
+    HashPtrTable<dictionary, fileName>& files,
+    scalar& value,
+    string& whyNot
+)
+{
+    const entry* e = caseEntry(caseDir, file, entryPath, files, whyNot);
+    if (!e)
+    {
         return false;
     }
     if (!numberOf(*e, value))
     {
         whyNot = file + " entry " + entryPath + " is not a number";
         return false;
+    }
+    return true;
+}
+
+
+// An entry's value as text, for a message
+static string textOf(const entry& e)
+{
+    if (e.isDict())
+    {
+        return "a dictionary";
+    }
+    OStringStream os;
+    os.precision(12);       // numbers that differ show it
+    const ITstream& is = e.stream();
+    forAll(is, i)
+    {
+        if (i)
+        {
+            os  << ' ';
+        }
+        if (is[i].isStringType())
+        {
+            os  << is[i].stringToken().c_str();
+        }
+        else
+        {
+            os  << is[i];
+        }
+    }
+    return os.str();
+}
+
+
+// Whether two entries hold the same value: numbers within 1e-9 relative,
+// words and strings equal as text (a word and a string of the same text
+// are the same)
+static bool sameValue(const entry& a, const entry& b)
+{
+    scalar x = 0, y = 0;
+    if (numberOf(a, x) && numberOf(b, y))
+    {
+        return mag(x - y) <= 1e-9*max(mag(x), mag(y));
+    }
+    if (a.isDict() || b.isDict())
+    {
+        return false;
+    }
+    const ITstream& sa = a.stream();
+    const ITstream& sb = b.stream();
+    return
+        sa.size() == 1 && sb.size() == 1
+     && sa[0].isStringType() && sb[0].isStringType()
+     && sa[0].stringToken() == sb[0].stringToken();
+}
+
+
+// Whether this case holds every value of the study's context (the entries
+// its errors hold for, e.g. the form of the colloid cut-offs); otherwise
+// false, with why not
+static bool caseIsContext
+(
+    const fileName& caseDir,
+    const dictionary& study,
+    HashPtrTable<dictionary, fileName>& files,
+    string& whyNot
+)
+{
+    // A study without a context holds for any case (one written before
+    // the context existed, or whose errorStudyDict declares none)
+    const dictionary* context = study.findDict("context");
+    if (!context)
+    {
+        return true;
+    }
+    for (const entry& c : *context)
+    {
+        const dictionary& s = c.dict();
+        const fileName file(s.get<fileName>("file"));
+        const word entryPath(s.get<string>("entry"), false);
+        const entry* e = caseEntry(caseDir, file, entryPath, files, whyNot);
+        if (!e)
+        {
+            return false;
+        }
+        const entry& measured = s.lookupEntry("value", keyType::LITERAL);
+        if (!sameValue(*e, measured))
+        {
+            whyNot =
+                "the study's " + file + " entry " + entryPath + " is "
+              + textOf(measured) + ", this case's " + textOf(*e);
+            return false;
+        }
     }
     return true;
 }
@@ -125,13 +236,23 @@ static void report
     Ostream& os
 )
 {
+    HashPtrTable<dictionary, fileName> files;
+    string notContext;
+    if (!caseIsContext(caseDir, study, files, notContext))
+    {
+        os  << "Expected error: none measured for this case"
+            << " (errorStudy/measuredErrors, "
+            << study.get<string>("measured").c_str() << ": "
+            << notContext.c_str() << ")" << nl;
+        return;
+    }
+
     os  << "Expected error at this case's settings, measured by"
         << " colloidErrorStudy (errorStudy/measuredErrors, "
         << study.get<string>("measured").c_str() << "; relative errors):"
         << nl;
 
     const wordList quantities(study.get<wordList>("quantities"));
-    HashPtrTable<dictionary, fileName> files;
     for (const entry& settingEntry : study.subDict("settings"))
     {
         const dictionary& setting = settingEntry.dict();

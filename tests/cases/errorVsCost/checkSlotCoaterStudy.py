@@ -12,13 +12,20 @@ Asserted:
     to coarse, keep their sign and grow with the refinement measure;
   - where it says 'no change', the rungs agree to 1e-12 (relative);
   - every rung's error is known except where the ladder is not in its
-    asymptotic range (then the finest rung's is not).
+    asymptotic range (then the finest rung's is not);
+  - measuredErrors records the study's context (errorStudyDict): the form
+    of the colloid cut-offs and the zeta potential with the case's values
+    (src/python/foamDict.py reads both files).
 
 usage: checkSlotCoaterStudy.py studyOutputDir
 """
 import csv
 import os
 import sys
+
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.realpath(__file__)),
+                                "..", "..", "..", "src", "python"))
+import foamDict  # noqa: E402
 
 
 def main():
@@ -60,6 +67,20 @@ def main():
             good = good and (not unknown or (o["source"] == "finest rung" and len(unknown) == 1))
             print("    %s: %s: %s" % (q, verdict, "ok" if good else "FAIL"))
             ok = ok and good
+
+    # The study's context, with the case's values
+    case = os.path.dirname(os.path.abspath(out))
+    measured = foamDict.read(os.path.join(out, "measuredErrors"))
+    parameters = foamDict.read(os.path.join(case, "system", "slotCoaterParameters"))
+    context = measured.get("context")
+    recorded = {e.get("entry"): e.get("value") for e in context.values()
+                if isinstance(e, dict)} if isinstance(context, dict) else {}
+    for name in ("colloidCutoffForm", "zetaPotential"):
+        good = name in recorded and recorded[name] == parameters.get(name)
+        print("measuredErrors context %s: %r (the case's %r): %s"
+              % (name, recorded.get(name), parameters.get(name), "ok" if good else "FAIL"))
+        ok = ok and good
+
     print("PASS" if ok else "FAIL")
     return 0 if ok else 1
 

@@ -12,7 +12,12 @@ the study's own table, errorStudy.csv:
              rungs;
   noStudy:   "none measured for this case";
   missingEntry: "not measured", naming the file and the missing entry;
-  corrupt:   "cannot be used", and the run goes to its end.
+  corrupt:   "cannot be used", and the run goes to its end;
+  otherDensity, otherDrag: the case is not the study's context (a number,
+             a word): "none measured for this case", naming the entry and
+             both values, and no setting's error;
+  contextEntryMissing: the study's context names an entry this case does
+             not have: "none measured for this case", naming it.
 
 usage: checkStartupReport.py studyOutputDir workDir
 """
@@ -114,6 +119,21 @@ def main():
           re.search(r"^Expected error: errorStudy/measuredErrors cannot be used", log, re.M)
           is not None)
     check("corrupt: the run went to its end", re.search(r"^End\s*$", log, re.M) is not None)
+
+    # otherDensity, otherDrag
+    for variant, why in (
+            ("otherDensity", "the study's constant/couplingProperties entry particles/density "
+                             "is 2500, this case's 2600)"),
+            ("otherDrag", "the study's constant/couplingProperties entry dragModel "
+                          "is schillerNaumann, this case's stokes)"),
+            ("contextEntryMissing", ": constant/couplingProperties has no entry particles/noSuchEntry)")):
+        lines = report_lines(os.path.join(work, variant, "log.colloidDEMFoam"))
+        print("\n".join(lines))
+        check("%s: none measured for this case, %s" % (variant, why),
+              any(l.startswith("Expected error: none measured for this case") and l.endswith(why)
+                  for l in lines))
+        check("%s: no setting's error printed" % variant,
+              not any(l.strip().startswith("demTimeStep") for l in lines))
 
     print("PASS" if ok else "FAIL")
     return 0 if ok else 1

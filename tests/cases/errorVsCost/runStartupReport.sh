@@ -7,6 +7,10 @@
 #   noStudy    no errorStudy folder
 #   missingEntry  the study names an entry this case does not have
 #   corrupt    the study file cut in the middle (a run never stops for it)
+#   otherDensity  the particle density, part of the study's context, 2600
+#              here against the study's 2500 kg/m^3
+#   otherDrag  the study's context says another drag law (a word)
+#   contextEntryMissing  the study's context names an entry the case lacks
 # then checkStartupReport.py compares the printed lines with the study's
 # errorStudy.csv.
 #
@@ -21,13 +25,14 @@ set -u
 
 rm -rf "$work"
 mkdir -p "$work"
-for variant in onRung offLadder noStudy missingEntry corrupt
+for variant in onRung offLadder noStudy missingEntry corrupt otherDensity otherDrag \
+    contextEntryMissing
 do
     dir=$work/$variant
     cp -r "$study/errorStudy/demTimeStep/1_1e-08" "$dir"
     sed -i "s/^endTime .*/endTime 2e-08;/" "$dir/system/controlDict"
     case $variant in
-        onRung|offLadder|missingEntry|corrupt)
+        onRung|offLadder|missingEntry|corrupt|otherDensity|otherDrag|contextEntryMissing)
             mkdir "$dir/errorStudy"
             cp "$study/errorStudy/measuredErrors" "$dir/errorStudy/" ;;
     esac
@@ -37,6 +42,14 @@ do
                 "$dir/errorStudy/measuredErrors" ;;
         corrupt)
             head -c 600 "$study/errorStudy/measuredErrors" > "$dir/errorStudy/measuredErrors" ;;
+        otherDensity)
+            sed -i "s/^\( *density \+\)[^;]*;/\12600;/" "$dir/constant/couplingProperties" ;;
+        contextEntryMissing)
+            sed -i 's#entry "particles/density"#entry "particles/noSuchEntry"#' \
+                "$dir/errorStudy/measuredErrors" ;;
+        otherDrag)
+            sed -i 's#entry "dragModel"; value "stokes"#entry "dragModel"; value "schillerNaumann"#' \
+                "$dir/errorStudy/measuredErrors" ;;
     esac
     if [ "$variant" = offLadder ]
     then
