@@ -33,7 +33,7 @@ case $variant in
     badExpression)   expression="value/0"; expect="settings/dt/set: expression \"value/0\".*division by zero" ;;
     missingQuantity) names="(q r)"; expect="printed no value for r" ;;
     badContext)      context="(dt)"; expect="keyword 'context'.*\(file entry\) pairs" ;;
-    missingContext)  context="((system/parameters form))"; expect="context: no entry 'form' in system/parameters" ;;
+    missingContext)  context="((system/parameters shape))"; expect="context: no entry 'shape' in system/parameters" ;;
     changedContext)  context="((system/parameters form))"; expect="context: .* ran with system/parameters form = faded, the case has shifted: run the study with -rerun" ;;
     variableContext) context="((system/parameters ratio))"; expect="keyword 'context'.*ratio is \\\$dt: name the entry that holds it" ;;
     *) echo "unknown variant $variant"; exit 2 ;;
