@@ -70,6 +70,14 @@ static const entry* caseEntry
 }
 
 
+// Whether two numbers of a study and a case are the same setting: within
+// 1e-9 relative (a value written back from a rung's text)
+static bool sameNumber(const scalar x, const scalar y)
+{
+    return mag(x - y) <= 1e-9*max(mag(x), mag(y));
+}
+
+
 // The number an entry of a case's dictionary holds; otherwise false, with
 // why not
 static bool caseNumber
@@ -133,7 +141,7 @@ static bool sameValue(const entry& a, const entry& b)
     scalar x = 0, y = 0;
     if (numberOf(a, x) && numberOf(b, y))
     {
-        return mag(x - y) <= 1e-9*max(mag(x), mag(y));
+        return sameNumber(x, y);
     }
     if (a.isDict() || b.isDict())
     {
@@ -219,7 +227,7 @@ static label caseIsRung
         {
             return -1;
         }
-        if (mag(value - wanted) > 1e-9*max(mag(value), mag(wanted)))
+        if (!sameNumber(value, wanted))
         {
             return 0;
         }
