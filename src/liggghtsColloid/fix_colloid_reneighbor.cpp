@@ -4,8 +4,6 @@
 
 #include "fix_colloid_reneighbor.h"
 #include "colloid_append_fix.h"
-#include <cstring>
-#include "modify.h"
 
 using namespace LAMMPS_NS;
 
@@ -30,18 +28,7 @@ int FixColloidReneighbor::setmask()
 
 FixColloidReneighbor *FixColloidReneighbor::attach(LAMMPS *lmp)
 {
-    Modify *modify = lmp->modify;
-    for (int i = 0; i < modify->nfix; i++)
-        if (std::strcmp(modify->fix[i]->id, fixId) == 0)
-            return dynamic_cast<FixColloidReneighbor*>(modify->fix[i]);
-
-    char id[sizeof(fixId)], group[] = "all", style[sizeof(fixStyle)];
-    std::strcpy(id, fixId);
-    std::strcpy(style, fixStyle);
-    char *arg[3] = {id, group, style};
-    FixColloidReneighbor *fix = new FixColloidReneighbor(lmp, 3, arg);
-    Colloid::colloidAppendFix(lmp, fix);
-    return fix;
+    return Colloid::colloidAttachFix<FixColloidReneighbor>(lmp, fixId, fixStyle);
 }
 
 void FixColloidReneighbor::at(LAMMPS *lmp, bigint step)

@@ -5,6 +5,7 @@
 
 #include "register_colloid_models.h"
 #include "fix_colloid_implicit.h"
+#include "fix_colloid_insert.h"
 #include "fix_colloid_reneighbor.h"
 #include "register_variant.h"
 
@@ -47,6 +48,20 @@ extern "C" void colloidDragCallback(void *lmp, void (*callback)(void *), void *c
 extern "C" void colloidReneighborAt(void *lmp, long long step)
 {
     LAMMPS_NS::FixColloidReneighbor::at(static_cast<LAMMPS_NS::LAMMPS *>(lmp), step);
+}
+
+extern "C" int colloidInsertAtoms(void *lmp, int n, const double *x, const double *v,
+                                  double radius, double density, int type, int firstTag)
+{
+    LAMMPS_NS::FixColloidInsert *fix =
+        LAMMPS_NS::FixColloidInsert::attach(static_cast<LAMMPS_NS::LAMMPS *>(lmp));
+    if (n == 0) return 0;
+    return fix->queue(n, x, v, radius, density, type, firstTag) ? 0 : -1;
+}
+
+extern "C" long long colloidInsertedAtoms(void *lmp)
+{
+    return LAMMPS_NS::FixColloidInsert::attach(static_cast<LAMMPS_NS::LAMMPS *>(lmp))->created();
 }
 
 namespace {

@@ -33,6 +33,18 @@
    rebuild, e.g. massflow/mesh deleting the particles it counted, is
    done before a restart is written after that step).  The first call
    creates the fix: make it before the first run (step -1: none yet).
+
+   colloidInsertAtoms(lmp, n, x, v, radius, density, type, firstTag)
+   queues n spheres of the given radius, density (the mass from them) and
+   atom type, in group all, without rotation, at the positions x and
+   velocities v (3n values each, LIGGGHTS units), with ids firstTag,
+   firstTag + 1, ..., for the first step of the next run
+   (fix_colloid_insert.h; every rank passes the same list).  It returns
+   0, or -1 for an atom type the DEM does not have.  colloidInsertedAtoms
+   (lmp) gives the number created from the last queue on all ranks (-1
+   before that step; fewer than n for positions outside the box).  The
+   first call of colloidInsertAtoms (n may be 0) creates the fix: make it
+   before the first run.
 ------------------------------------------------------------------------- */
 
 #ifndef COLLOID_REGISTER_COLLOID_MODELS_H
@@ -51,5 +63,17 @@ extern "C" __attribute__((visibility("default"))) void colloidReneighborAt
     void *lmp,
     long long step
 );
+extern "C" __attribute__((visibility("default"))) int colloidInsertAtoms
+(
+    void *lmp,
+    int n,
+    const double *x,
+    const double *v,
+    double radius,
+    double density,
+    int type,
+    int firstTag
+);
+extern "C" __attribute__((visibility("default"))) long long colloidInsertedAtoms(void *lmp);
 
 #endif

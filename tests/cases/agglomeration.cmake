@@ -65,8 +65,8 @@ set_tests_properties(case.agglomeration.periodicCrossing.parallel PROPERTIES PRO
 # agglomeration.slotCoaterPeriodicFill: the slot coater's DEM box is
 # periodic in z, and its fill keeps fillMinimumGap between every two
 # particles (across the periodic face too) and from the walls, with no
-# empty band at the periodic face; its feed inserts no particle closer
-# than half the gap to another (the solver's "Inserted particles" line)
+# empty band at the periodic face; its feed places no particle closer
+# than the gap to another (the solver's "Inserted particles" line)
 # (checkSlotCoaterFill.py, on the serial fixture of case.slotCoater).
 add_test(NAME case.agglomeration.slotCoaterPeriodicFill
     COMMAND python3 ${agglomerationDir}/checkSlotCoaterFill.py ${CMAKE_CURRENT_BINARY_DIR}/slotCoater/serial)
@@ -119,3 +119,27 @@ add_test(NAME case.agglomeration.study
     COMMAND ${agglomerationDir}/runStudyTest.sh ${agglomerationWork}/study)
 set_tests_properties(case.agglomeration.study PROPERTIES
     TIMEOUT 600 LABELS "case;agglomeration" PASS_REGULAR_EXPRESSION "PASS")
+
+# agglomeration.feed.serial / .parallel: the coupling's feed (particleFeed)
+# through the inlet of the channel in plane Poiseuille flow: every
+# insertion's count (closed form of the inflow), the flux profile across
+# the inlet (chi-square), the placement in the region the liquid swept
+# (entry times uniform: Kolmogorov-Smirnov), the gaps to particles and
+# walls (runFeedTest.sh, checkFeed.py); .plug: the same in plug flow with
+# the walls moving along (inflow up to the walls: the gap to the walls
+# tested); .serialVsParallel: both runs hold the same particles, ids and
+# positions (the fluid split across the inlet on 2 ranks).
+foreach(mode serial parallel plug)
+    add_test(NAME case.agglomeration.feed.${mode}
+        COMMAND ${agglomerationDir}/runFeedTest.sh ${mode} ${agglomerationWork}/feed_${mode})
+    set_tests_properties(case.agglomeration.feed.${mode} PROPERTIES
+        TIMEOUT 120 LABELS "case;agglomeration" ENVIRONMENT PYTHONDONTWRITEBYTECODE=1
+        FIXTURES_SETUP feed_${mode})
+endforeach()
+set_tests_properties(case.agglomeration.feed.parallel PROPERTIES PROCESSORS 2)
+add_test(NAME case.agglomeration.feed.serialVsParallel
+    COMMAND python3 ${agglomerationDir}/checkFeed.py
+            ${agglomerationWork}/feed_serial ${agglomerationWork}/feed_parallel)
+set_tests_properties(case.agglomeration.feed.serialVsParallel PROPERTIES
+    TIMEOUT 30 LABELS "case;agglomeration" ENVIRONMENT PYTHONDONTWRITEBYTECODE=1
+    FIXTURES_REQUIRED "feed_serial;feed_parallel")

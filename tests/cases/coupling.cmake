@@ -34,7 +34,8 @@ foreach(variant missingKeyword negativeDiameter negativeDensity unknownDragModel
                 inconsistentDeltaT demStepTooLong gravityInScript demScriptError
                 resumeIncomplete misspeltKeyword misspeltTopKeyword
                 diameterMismatch lostParticle particleOutsideBox
-                coincidentParticles purgeWrite)
+                coincidentParticles purgeWrite
+                feedUnknownPatch feedSolidsFraction feedInterval feedNoInflow)
     add_test(NAME case.coupling.badInput.${variant}
         COMMAND ${couplingDir}/runBadInputTest.sh ${variant} ${couplingWork}/badInput_${variant})
     set_tests_properties(case.coupling.badInput.${variant} PROPERTIES

@@ -1,7 +1,7 @@
 # Runs that are never lost and never lie (label reliability).  They reuse
 # the slot-coater test runs (slotCoater.cmake) as fixtures: about 2000
 # particles with Walton-Braun contact, the colloid forces, mesh walls, a
-# feed (insert/stream) and an outflow (massflow/mesh).
+# feed (the coupling's, particleFeed) and an outflow (massflow/mesh).
 #
 # reliability.resume.<serial|parallel>: the run again from time 0, killed
 #   with SIGKILL right after its write at 1.2 us, resumed from latestTime

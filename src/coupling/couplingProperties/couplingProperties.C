@@ -294,7 +294,7 @@ Foam::couplingProperties::couplingProperties(const objectRegistry& obr)
     (
         dict,
         {"couplingMode", "dragModel", "forceModels", "twoWay", "fluid",
-         "particles", "DEM", "contactAnalysis", "brownian"},
+         "particles", "DEM", "contactAnalysis", "brownian", "feed"},
         false
     );
     if (twoWay_)

@@ -1062,6 +1062,7 @@ Foam::demCoupling::demCoupling
     records_(),
     deposit_(),
     insertedSampler_(),
+    feed_(),
     proc_(),
     engine_(),
     restart_(U.mesh()),
@@ -1083,6 +1084,18 @@ Foam::demCoupling::demCoupling
 {
     checkTimeStep();
     checkForceModels();
+    if (props_.found("feed"))
+    {
+        feed_.reset
+        (
+            new particleFeed
+            (
+                props_.subDict("feed"), U, props_.particleDiameter(),
+                props_.particleDensity(), props_.couplingInterval(),
+                props_.demTimeStep()
+            )
+        );
+    }
 
     if (props_.twoWay())
     {
@@ -1596,6 +1609,20 @@ void Foam::demCoupling::evolve()
             dem.reneighbourAt(dem.timeStep() + props_.couplingInterval());
         }
 
+        // The feed's particles due at this step, before the run (counted
+        // as coupling work)
+        if (feed_.valid() && feed_->due(dem.timeStep()))
+        {
+            // updateForces keeps the interpolator current unless a kernel
+            // samples the fluid
+            if (props_.kernelSamplesU())
+            {
+                UInterp_.update();
+            }
+            feed_->insert(dem, UInterp_);
+            couplingSeconds_ += clock.timeIncrement();
+        }
+
         // The run's time less that of coupling the particles it inserted
         // (counted as coupling work)
         const scalar insertedBefore = insertedSeconds_;
@@ -1603,6 +1630,10 @@ void Foam::demCoupling::evolve()
         demSeconds_ +=
             clock.timeIncrement() - (insertedSeconds_ - insertedBefore);
         particleSteps_ += scalar(nTotal)*props_.couplingInterval();
+        if (feed_.valid())
+        {
+            feed_->checkInserted(dem);
+        }
 
         // An analysis due: the locating gives it the wall distances too
         ++nCouplingSteps_;

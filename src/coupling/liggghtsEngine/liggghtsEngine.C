@@ -312,6 +312,31 @@ void Foam::liggghtsEngine::setUpNextRun()
 }
 
 
+bool Foam::liggghtsEngine::queueAtoms
+(
+    const std::vector<double>& x,
+    const std::vector<double>& v,
+    double radius,
+    double density,
+    int type,
+    int firstTag
+)
+{
+    liggghtsCall call;
+    return colloidInsertAtoms
+    (
+        lmp_, int(x.size()/3), x.data(), v.data(), radius, density, type,
+        firstTag
+    ) == 0;
+}
+
+
+long Foam::liggghtsEngine::queuedAtomsCreated() const
+{
+    return long(colloidInsertedAtoms(lmp_));
+}
+
+
 std::string Foam::liggghtsEngine::unitStyle() const
 {
     const char* u = engine(lmp_)->update->unit_style;
@@ -366,6 +391,7 @@ void Foam::liggghtsEngine::implicitDamping()
     // Before the implicit update: that fix stays last (its set-up must
     // follow the walls')
     colloidReneighborAt(lmp_, -1);
+    colloidInsertAtoms(lmp_, 0, nullptr, nullptr, 0, 0, 1, 1);
     colloidImplicitUpdate(lmp_);
 }
 

@@ -13,11 +13,11 @@ case.slotCoater):
     r + fillMinimumGap/2 of z = 0 or z = span (a reflecting or excluding
     face leaves that band empty) number what a uniform fill puts there,
     within 4 binomial standard deviations;
-  - the feed's particles, inserted with their radius grown by half the
-    gap: the solver's log reports their smallest gap to any particle
-    ("Inserted particles: smallest gap", the start-up overlap check run on
-    them), at least fillMinimumGap/2 (LIGGGHTS' overlap check alone puts
-    some touching: gap 0).
+  - the feed's particles (the coupling's feed, minimumGap fillMinimumGap):
+    the solver's log reports for each insertion their smallest gap to any
+    particle ("Inserted particles: smallest gap", the start-up overlap
+    check run on them), at least fillMinimumGap, or none closer than a
+    radius.
 
 usage: checkSlotCoaterFill.py case"""
 import math
@@ -121,11 +121,14 @@ def main():
           % (w, inBand, expected, sigma))
 
     solverLog = open(os.path.join(case, "log.colloidDEMFoam")).read()
-    inserted = re.findall(r"^Inserted particles: smallest gap (\S+) m", solverLog, re.M)
-    smallestInserted = min(float(g)*1e6 for g in inserted) if inserted else -1.0
-    check(bool(inserted) and smallestInserted >= 0.5*gapMin - tol,
-          "feed: %d insertion(s), smallest gap %.6g um >= fillMinimumGap/2"
-          % (len(inserted), smallestInserted))
+    reports = re.findall(r"^Inserted particles: (.*)$", solverLog, re.M)
+    gaps = [float(m.group(1))*1e6 for m in
+            (re.match(r"smallest gap (\S+) m", r) for r in reports) if m]
+    far = sum(1 for r in reports if r.startswith("no two closer than"))
+    check(bool(reports) and len(gaps) + far == len(reports)
+          and min(gaps + [gapMin]) >= gapMin - tol,
+          "feed: %d insertion(s), smallest gap %.6g um >= fillMinimumGap"
+          % (len(reports), min(gaps) if gaps else -1.0))
 
     if not ok:
         raise SystemExit("FAIL")

@@ -8,6 +8,7 @@
 #             gravityInScript demScriptError resumeIncomplete
 #             misspeltKeyword misspeltTopKeyword diameterMismatch lostParticle
 #             particleOutsideBox coincidentParticles purgeWrite
+#             feedUnknownPatch feedSolidsFraction feedInterval feedNoInflow
 set -e
 export PYTHONDONTWRITEBYTECODE=1   # no __pycache__ in the source tree
 variant=$1
@@ -48,6 +49,25 @@ case $variant in
         foamDictionary $props -entry DEM/timeStep -set 2e-07 > /dev/null
         foamDictionary system/controlDict -entry deltaT -set 2e-06 > /dev/null
         expect="Keyword 'timeStep' in .*couplingProperties.DEM\"? is 2e-07 s, longer than the particle relaxation time" ;;
+    feedUnknownPatch|feedSolidsFraction|feedInterval|feedNoInflow)
+        # the feed's settings (particleFeed): through the x = 0 side
+        patch=sides; fraction=0.05; interval=2e-7
+        case $variant in
+            feedUnknownPatch)
+                patch=noSuchPatch
+                expect="Keyword 'patch' in .*couplingProperties.feed\"? is noSuchPatch; allowed: a patch of the mesh" ;;
+            feedSolidsFraction)
+                fraction=0.7
+                expect="Keyword 'solidsFraction' in .*couplingProperties.feed\"? is 0.7; allowed range: \(0, 0.5\]" ;;
+            feedInterval)
+                interval=3e-8
+                expect="Keyword 'interval' in .*couplingProperties.feed\"? is 3e-08 s; allowed: a whole number \(1 or more\) of coupling steps of 2e-08 s" ;;
+            feedNoInflow)
+                patch=walls
+                expect="Keyword 'patch' in .*couplingProperties.feed\"? is walls: the liquid does not flow in through it" ;;
+        esac
+        printf 'feed\n{\n    patch %s;\n    solidsFraction %s;\n    minimumGap 1e-7;\n    interval %s;\n    seed 1;\n}\n' \
+            "$patch" "$fraction" "$interval" >> $props ;;
     gravityInScript)
         echo "fix gravity all gravity 9.81e-6 vector 0 -1 0" >> constant/DEM/in.liggghts
         expect="defines a 'fix gravity'" ;;

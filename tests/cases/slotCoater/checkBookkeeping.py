@@ -7,14 +7,18 @@ the numbers its settings imply.
    inserted (counted by the coupling as particles first appear) - removed
    (counted by the DEM's outflow fix), and the write time's cloud
    (lagrangian/particles) holds the particles present less those the
-   coupling step located outside the fluid (the feed zone above the
-   inlet).
+   coupling step located outside the fluid (none expected: the feed
+   places its particles in the fluid).
 3. The initial fill (DEM/fill.data) holds, per region (gap and slot),
    solidsFraction x region volume / V_p particles (LIGGGHTS rounds: +-1).
-4. inserted = fill + the feed: the feed zone (two diameters above the
-   inlet, slotWidth x span) is filled at the solids fraction each time its
-   content has moved through the inlet at the feed velocity
-   webSpeed x wetThickness / slotWidth; +-1 per batch (rounding).
+4. inserted = fill + the feed: each insertion k of the log ("Feed: N
+   particles", one per feed interval of constant/couplingProperties)
+   places floor(k R T) - floor((k - 1) R T) particles, R = solidsFraction
+   Q / V_p with Q the inflow the feed reports, itself q span within 1e-8
+   (the feed q = webSpeed x wetThickness per unit span; the inlet's
+   profile is scaled so that its faces carry q, and the particle run
+   reads it as the steady flow wrote it, to 10 digits), T the interval; the number of insertions is that of the intervals
+   completed before the last coupling step.
 5. Some particles were removed (the check of 2 is not vacuous).
 
 Geometry from DEM/slotCoater.liggghts (written by Allrun, um), particle
@@ -55,8 +59,8 @@ def main():
           "run reached endTime %g s (last time %s)" % (endTime, times[-1] if times else "none"))
 
     # Each write's counts, with the coupling step's own count of particles
-    # outside the fluid (the locator's, not the writer's: the feed zone
-    # above the inlet), which the line before it gives
+    # outside the fluid (the locator's, not the writer's), which the line
+    # before it gives
     counts = []
     located = None
     for line in log.splitlines():
@@ -91,13 +95,28 @@ def main():
     check(abs(fill - expectedFill) <= 2,
           "initial fill %d, expected %.1f (solids fraction %g)" % (fill, expectedFill, phi))
 
-    feedZone = g["feedZone"]    # [um], as Allrun wrote it for the DEM
-    feedVelocity = g["webSpeed"]*g["wetThickness"]/g["slotWidth"]
-    batch = phi*g["slotWidth"]*g["span"]*feedZone/vp
-    nBatches = 1 + int(1e-6*endTime*1e6/(feedZone/feedVelocity))   # um/(um/us) = us
-    expectedFeed = batch*nBatches
-    check(abs(inserted - fill - expectedFeed) <= nBatches,
-          "fed %d, expected %d batch(es) of %.2f" % (inserted - fill, nBatches, batch))
+    props = open(os.path.join(case, "constant", "couplingProperties")).read()
+    interval = float(re.search(r"^feed\s*\{[^}]*?^\s*interval\s+(\S+);", props, re.M | re.S).group(1))
+    couplingStep = float(re.search(r"^deltaT\s+(\S+);",
+                                   open(os.path.join(case, "system", "controlDict")).read(),
+                                   re.M).group(1))
+    # The inflow the feed found (its start-up line), the feed q span to
+    # 1e-8: the particle run's inlet profile is the steady flow's, written
+    # with 10 digits; the counts follow from the inflow it has
+    inflow = float(re.search(r"^Feed: through patch inlet, inflow (\S+) m\^3/s", log,
+                             re.M).group(1))*1e12    # m^3/s to um^3/us
+    q = g["webSpeed"]*g["wetThickness"]*g["span"]
+    check(abs(inflow - q) <= 1e-8*q, "feed inflow %.10g um^3/us, q span %.10g" % (inflow, q))
+    rate = phi*inflow/vp     # per us
+    T = interval*1e6        # us
+    fed = [int(n) for n in re.findall(r"^Feed: (\d+) particles", log, re.M)]
+    nInsertions = int(math.floor((endTime - couplingStep)/interval + 1e-9))
+    expectedFeed = [math.floor(k*rate*T) - math.floor((k - 1)*rate*T)
+                    for k in range(1, nInsertions + 1)]
+    check(fed == expectedFeed,
+          "feed: insertions %s, expected %s (%.4g per interval)" % (fed, expectedFeed, rate*T))
+    check(inserted - fill == sum(fed),
+          "fed %d = the insertions' %d" % (inserted - fill, sum(fed)))
     check(removed > 0, "removed %d particles through the outlet" % removed)
 
     velocity = particleCloud.read(files[-1])["velocity"]
