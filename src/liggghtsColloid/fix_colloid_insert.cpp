@@ -26,7 +26,6 @@ FixColloidInsert::FixColloidInsert(LAMMPS *lmp, int narg, char **arg)
   radius_(0.0),
   density_(0.0),
   type_(1),
-  firstTag_(1),
   created_(0)
 {
     force_reneighbor = 1;
@@ -44,7 +43,7 @@ FixColloidInsert *FixColloidInsert::attach(LAMMPS *lmp)
 }
 
 bool FixColloidInsert::queue(int n, const double *x, const double *v, double radius,
-                             double density, int type, int firstTag)
+                             double density, int type)
 {
     if (type < 1 || type > atom->ntypes) return false;
     x_.assign(x, x + 3*n);
@@ -52,7 +51,6 @@ bool FixColloidInsert::queue(int n, const double *x, const double *v, double rad
     radius_ = radius;
     density_ = density;
     type_ = type;
-    firstTag_ = firstTag;
     created_ = -1;
     next_reneighbor = update->ntimestep + 1;
     return true;
@@ -61,6 +59,14 @@ bool FixColloidInsert::queue(int n, const double *x, const double *v, double rad
 void FixColloidInsert::pre_exchange()
 {
     if (created_ >= 0 || update->ntimestep != next_reneighbor) return;
+
+    // The ids follow the largest present now
+    int maxTag = 0;
+    for (int i = 0; i < atom->nlocal; i++)
+        if (atom->tag[i] > maxTag) maxTag = atom->tag[i];
+    int firstTag = 0;
+    MPI_Allreduce(&maxTag, &firstTag, 1, MPI_INT, MPI_MAX, world);
+    firstTag++;
 
     for (int j = 0; j < modify->nfix; j++)
         if (modify->fix[j]->create_attribute) modify->fix[j]->pre_set_arrays();
@@ -79,7 +85,7 @@ void FixColloidInsert::pre_exchange()
 
         atom->avec->create_atom(type_, p);
         const int m = atom->nlocal - 1;
-        atom->tag[m] = firstTag_ + k;
+        atom->tag[m] = firstTag + k;
         atom->mask[m] = 1;      // group all
         for (int d = 0; d < 3; d++)
         {

@@ -24,8 +24,9 @@
 
    Every rank queues the same list and creates the atoms whose positions
    (after the periodic wrap) lie in its subdomain, in group all, with ids
-   firstTag + index in the list: the same ids on any number of ranks
-   (LIGGGHTS' tag_extend numbers them rank by rank).  The fix is created
+   following the largest present at that step (after the fixes before it
+   have inserted or deleted theirs) in list order: the same ids on any
+   number of ranks (LIGGGHTS' tag_extend numbers them rank by rank).  The fix is created
    by code before the first run (colloid_append_fix.h), so that every run
    lists it.
 ------------------------------------------------------------------------- */
@@ -51,7 +52,7 @@ public:
     //- Queue n spheres for the next step (see register_colloid_models.h);
     //  false for an atom type the DEM does not have
     bool queue(int n, const double *x, const double *v, double radius,
-               double density, int type, int firstTag);
+               double density, int type);
 
     //- Spheres created from the last queue on all ranks (-1: not yet)
     long long created() const { return created_; }
@@ -59,7 +60,7 @@ public:
 private:
     std::vector<double> x_, v_;
     double radius_, density_;
-    int type_, firstTag_;
+    int type_;
     long long created_;
 };
 

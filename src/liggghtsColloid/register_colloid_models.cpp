@@ -51,12 +51,12 @@ extern "C" void colloidReneighborAt(void *lmp, long long step)
 }
 
 extern "C" int colloidInsertAtoms(void *lmp, int n, const double *x, const double *v,
-                                  double radius, double density, int type, int firstTag)
+                                  double radius, double density, int type)
 {
     LAMMPS_NS::FixColloidInsert *fix =
         LAMMPS_NS::FixColloidInsert::attach(static_cast<LAMMPS_NS::LAMMPS *>(lmp));
     if (n == 0) return 0;
-    return fix->queue(n, x, v, radius, density, type, firstTag) ? 0 : -1;
+    return fix->queue(n, x, v, radius, density, type) ? 0 : -1;
 }
 
 extern "C" long long colloidInsertedAtoms(void *lmp)

@@ -34,11 +34,11 @@
    done before a restart is written after that step).  The first call
    creates the fix: make it before the first run (step -1: none yet).
 
-   colloidInsertAtoms(lmp, n, x, v, radius, density, type, firstTag)
-   queues n spheres of the given radius, density (the mass from them) and
-   atom type, in group all, without rotation, at the positions x and
-   velocities v (3n values each, LIGGGHTS units), with ids firstTag,
-   firstTag + 1, ..., for the first step of the next run
+   colloidInsertAtoms(lmp, n, x, v, radius, density, type) queues n
+   spheres of the given radius, density (the mass from them) and atom
+   type, in group all, without rotation, at the positions x and
+   velocities v (3n values each, LIGGGHTS units), with ids in list order
+   after the largest present, for the first step of the next run
    (fix_colloid_insert.h; every rank passes the same list).  It returns
    0, or -1 for an atom type the DEM does not have.  colloidInsertedAtoms
    (lmp) gives the number created from the last queue on all ranks (-1
@@ -71,8 +71,7 @@ extern "C" __attribute__((visibility("default"))) int colloidInsertAtoms
     const double *v,
     double radius,
     double density,
-    int type,
-    int firstTag
+    int type
 );
 extern "C" __attribute__((visibility("default"))) long long colloidInsertedAtoms(void *lmp);
 

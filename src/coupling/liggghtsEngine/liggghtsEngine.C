@@ -318,15 +318,13 @@ bool Foam::liggghtsEngine::queueAtoms
     const std::vector<double>& v,
     double radius,
     double density,
-    int type,
-    int firstTag
+    int type
 )
 {
     liggghtsCall call;
     return colloidInsertAtoms
     (
-        lmp_, int(x.size()/3), x.data(), v.data(), radius, density, type,
-        firstTag
+        lmp_, int(x.size()/3), x.data(), v.data(), radius, density, type
     ) == 0;
 }
 
@@ -391,7 +389,7 @@ void Foam::liggghtsEngine::implicitDamping()
     // Before the implicit update: that fix stays last (its set-up must
     // follow the walls')
     colloidReneighborAt(lmp_, -1);
-    colloidInsertAtoms(lmp_, 0, nullptr, nullptr, 0, 0, 1, 1);
+    colloidInsertAtoms(lmp_, 0, nullptr, nullptr, 0, 0, 1);
     colloidImplicitUpdate(lmp_);
 }
 

@@ -107,20 +107,30 @@ void Foam::particleFeed::gatherPatch()
 
     // Its edges where a wall patch meets it
     {
+        // (the faces of the cell next to the edge's patch face that hold
+        // both its points: no edge addressing of the whole mesh)
         DynamicList<point> walls;
-        const labelList& meshEdges = pp.meshEdges();
         for (label e = pp.nInternalEdges(); e < pp.nEdges(); ++e)
         {
+            const edge meshEdge
+            (
+                pp.meshPoints()[pp.edges()[e][0]],
+                pp.meshPoints()[pp.edges()[e][1]]
+            );
+            const label celli =
+                mesh_.faceOwner()[pp.start() + pp.edgeFaces()[e][0]];
             bool onWall = false;
-            for (const label facei : mesh_.edgeFaces()[meshEdges[e]])
+            for (const label facei : mesh_.cells()[celli])
             {
                 if (!mesh_.isInternalFace(facei))
                 {
                     const label patchj = mesh_.boundaryMesh().whichPatch(facei);
+                    const face& f = mesh_.faces()[facei];
                     onWall = onWall
                      || (
                             patchj != patchi_
                          && isA<wallPolyPatch>(mesh_.boundaryMesh()[patchj])
+                         && f.found(meshEdge[0]) && f.found(meshEdge[1])
                         );
                 }
             }
@@ -248,9 +258,21 @@ void Foam::particleFeed::insert
         label(std::floor(k*R*T)) - label(std::floor((k - 1)*R*T));
     if (N <= 0)
     {
+        Info<< "Feed: 0 particles (" << nPlaced_ << " placed by this run)"
+            << endl;
         return;
     }
     const scalar D = depthAllowance*maxInwardVelocity()*T;
+    if (D > cellDepth_)
+    {
+        FatalErrorInFunction
+            << "Keyword 'interval' in " << dictName_ << " is " << interval_
+            << " s: the liquid now moves up to " << D << " m into the fluid"
+            << " in it, deeper than the cells next to patch "
+            << mesh_.boundaryMesh()[patchi_].name() << " (" << cellDepth_
+            << " m; the inflow has grown since the start-up)"
+            << exit(FatalError);
+    }
 
     // The DEM box's periods [m] (zero: not periodic)
     double lo[3], hi[3];
@@ -414,20 +436,12 @@ void Foam::particleFeed::insert
             vs[3*a + c] = placedU[a][c]/demUnits::velocity;
         }
     }
-    // The ids follow the largest present
-    const int* tag = dem.tag();
-    int maxTag = 0;
-    for (int i = 0; i < dem.nLocal(); ++i)
-    {
-        maxTag = max(maxTag, tag[i]);
-    }
-    reduce(maxTag, maxOp<int>());
     if
     (
         !dem.queueAtoms
         (
             xs, vs, radius_/demUnits::length, density_/demUnits::density,
-            int(atomType_), maxTag + 1
+            int(atomType_)
         )
     )
     {
@@ -480,6 +494,7 @@ Foam::particleFeed::particleFeed
     atomType_(1),
     radius_(0.5*diameter),
     density_(density),
+    cellDepth_(GREAT),
     dictName_(dict.name()),
     nPlaced_(0),
     nQueued_(0)
@@ -577,6 +592,7 @@ Foam::particleFeed::particleFeed
         );
     }
     reduce(cellDepth, minOp<scalar>());
+    cellDepth_ = cellDepth;
     const scalar uMax = maxInwardVelocity();
     const scalar D = depthAllowance*uMax*interval_;
     if (D > cellDepth)

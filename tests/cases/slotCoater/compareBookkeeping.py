@@ -4,8 +4,8 @@
 (DEM/fill.data, packed once, serially, by the tutorial's Allrun), so they
 must insert, hold and remove the same numbers of particles (exactly), and
 their mean particle velocity must agree within 1 % of its magnitude, per
-component (measured: about 1e-5; the feed's few particles are placed per
-rank, but all move at the feed velocity until they pass the inlet).
+component (measured: about 1e-5; the feed places the same particles on
+any number of ranks).
 
 usage: compareBookkeeping.py SERIALCASE PARALLELCASE
 """
