@@ -45,6 +45,12 @@ Foam::scalar Foam::particleFeed::inflow() const
 }
 
 
+Foam::scalar Foam::particleFeed::particleVolume() const
+{
+    return 4.0/3.0*constant::mathematical::pi*pow3(radius_);
+}
+
+
 Foam::scalar Foam::particleFeed::maxInwardVelocity() const
 {
     const polyPatch& pp = mesh_.boundaryMesh()[patchi_];
@@ -252,8 +258,7 @@ void Foam::particleFeed::insert
 {
     const label k = label(dem.timeStep()/stepsPerInsertion_);
     const scalar T = interval_;
-    const scalar Vp = 4.0/3.0*constant::mathematical::pi*pow3(radius_);
-    const scalar R = solidsFraction_*inflow()/Vp;       // [1/s]
+    const scalar R = solidsFraction_*inflow()/particleVolume();     // [1/s]
     const label N =
         label(std::floor(k*R*T)) - label(std::floor((k - 1)*R*T));
     if (N <= 0)
@@ -607,10 +612,9 @@ Foam::particleFeed::particleFeed
             << exit(FatalIOError);
     }
 
-    const scalar Vp = 4.0/3.0*constant::mathematical::pi*pow3(radius_);
     Info<< "Feed: through patch " << patchName << ", inflow " << Q
         << " m^3/s at solids fraction " << solidsFraction_ << ": "
-        << solidsFraction_*Q/Vp*interval_ << " particles every " << interval_
+        << solidsFraction_*Q/particleVolume()*interval_ << " particles every " << interval_
         << " s, at least " << minimumGap_ << " m from particles and walls ("
         << wallEdges_.size()/2 << " wall edges)" << endl;
 }
