@@ -92,24 +92,32 @@ foreach(nProcs 1 2)
         TIMEOUT 60 LABELS "case;reliability" PROCESSORS ${nProcs})
 endforeach()
 
-# reliability.outflowResume.<serial|parallel>: a particle an outflow
-#   (massflow/mesh, delete_atoms) counted 2.5 DEM steps before a write,
+# reliability.outflowResume[AtEnd].<serial|parallel>: a particle an outflow
+#   (massflow/mesh, delete_atoms) counted 2.5 DEM steps before a write
+#   (AtEnd: the end time, written although not a write time),
 #   not yet deleted by LIGGGHTS (it deletes at the next rebuild of the
 #   neighbour lists): the rebuild the coupling asks for before each write
 #   deletes it, so that a run resumed from that write does not lose it
 #   (runOutflowResumeTest.sh).
 foreach(mode serial parallel)
-    add_test(NAME case.reliability.outflowResume.${mode}
-        COMMAND ${reliabilityDir}/runOutflowResumeTest.sh ${mode}
-                ${reliabilityWork}/outflowResume_${mode})
-    if(mode STREQUAL parallel)
-        set(nProcs 2)
-    else()
-        set(nProcs 1)
-    endif()
-    set_tests_properties(case.reliability.outflowResume.${mode} PROPERTIES
-        TIMEOUT 120 LABELS "case;reliability" PROCESSORS ${nProcs}
-        PASS_REGULAR_EXPRESSION "PASS")
+    foreach(at write end)
+        if(at STREQUAL write)
+            set(name case.reliability.outflowResume.${mode})
+        else()
+            set(name case.reliability.outflowResumeAtEnd.${mode})
+        endif()
+        add_test(NAME ${name}
+            COMMAND ${reliabilityDir}/runOutflowResumeTest.sh ${mode} ${at}
+                    ${reliabilityWork}/outflowResume_${mode}_${at})
+        if(mode STREQUAL parallel)
+            set(nProcs 2)
+        else()
+            set(nProcs 1)
+        endif()
+        set_tests_properties(${name} PROPERTIES
+            TIMEOUT 120 LABELS "case;reliability" PROCESSORS ${nProcs}
+            PASS_REGULAR_EXPRESSION "PASS")
+    endforeach()
 endforeach()
 
 add_test(NAME case.reliability.outsideFluid

@@ -1600,10 +1600,16 @@ void Foam::demCoupling::evolve()
             voidfraction_->oldTime();
         }
 
-        // This step's time folder will be written: no stale DEM state in
+        // This step's time folder will be written (a write time, or the
+        // end time, which the solver always writes): no stale DEM state in
         // it, and no particle that an outflow counted but has not deleted
-        // yet (it would be kept by the restart and lost after a resume)
-        if (mesh_.time().writeTime())
+        // yet (it would be kept by the restart and lost after a resume:
+        // slot-coater study resumed at 112, 117 and 119 us, not write
+        // times, one such particle lost at 121 us)
+        const Time& runTime = mesh_.time();
+        const bool atEnd =
+            runTime.value() >= runTime.endTime().value() - 0.5*runTime.deltaTValue();
+        if (runTime.writeTime() || atEnd)
         {
             restart_.invalidate();
             dem.reneighbourAt(dem.timeStep() + props_.couplingInterval());

@@ -13,7 +13,9 @@
 # the neighbour lists); a neighbour skin of 16 um, so that the particle's
 # own motion rebuilds the lists only every 8 um.  It crosses the plane at
 # 0.995 us, 2.5 DEM steps (2e-9 s) before the write at 1 us.
-#   part 1: from 0 to the write at 1 us;
+#   part 1: from 0 to 1 us, a write time ('write': every 50 steps) or
+#           only the end time, which the solver writes anyway ('end':
+#           every 60 steps; a resumed study run ends so);
 #   part 2: resumed from 1 us to 12 us; the particle would leave the DEM box
 #           at 11 us (x = 160 um).
 # Asserted: both parts end without error, the moving particle removed
@@ -22,16 +24,22 @@
 # Serial, or on 2 ranks (fluid by METIS, DEM spatially; the particle on
 # the upper rank in x).
 #
-#   runOutflowResumeTest.sh serial|parallel workDir
+#   runOutflowResumeTest.sh serial|parallel write|end workDir
 set -e
 mode=$1
-work=$2
+at=$2
+work=$3
 here=$(cd "$(dirname "$0")" && pwd)
 source "$here/testEnvironment.sh"
 case $mode in
 serial)   run() { colloidDEMFoam > "$1" 2>&1; } ;;
 parallel) run() { mpirun -np 2 colloidDEMFoam -parallel > "$1" 2>&1; } ;;
-*)  echo "usage: $0 serial|parallel workDir" 1>&2; exit 1 ;;
+*)  echo "usage: $0 serial|parallel write|end workDir" 1>&2; exit 1 ;;
+esac
+case $at in
+write) writeInterval=50 ;;
+end)   writeInterval=60 ;;
+*)  echo "usage: $0 serial|parallel write|end workDir" 1>&2; exit 1 ;;
 esac
 
 rm -rf "$work"
@@ -92,7 +100,7 @@ endsolid outflow
 EOI
 sed -i 's/^value .*/value (0 0 0);/' constant/g
 foamDictionary system/controlDict -entry endTime -set 1e-06 > /dev/null
-foamDictionary system/controlDict -entry writeInterval -set 50 > /dev/null
+foamDictionary system/controlDict -entry writeInterval -set $writeInterval > /dev/null
 blockMesh > log.blockMesh 2>&1
 mkdir -p 0
 postProcess -func writeCellCentres -time 0 > log.writeCellCentres 2>&1
