@@ -160,11 +160,12 @@ FixColloidImplicit::FixColloidImplicit(LAMMPS *lmp, int narg, char **arg)
   nIterations_(0),
   maxIterations_(0),
   nNotConverged_(0),
-  seconds_(0.0)
+  seconds_(0.0),
+  nGlobalMembers_(0.0)
 {
     comm_forward = 3;
     vector_flag = 1;
-    size_vector = 5;
+    size_vector = 6;
     global_freq = 1;
     extvector = 0;
 }
@@ -335,7 +336,13 @@ double FixColloidImplicit::compute_vector(int n)
         case 1: return nSolves_ ? double(nIterations_)/nSolves_ : 0.0;
         case 2: return maxIterations_;
         case 3: return nNotConverged_;
-        default: return seconds_;
+        case 4: return seconds_;
+        default:
+        {
+            double all = 0.0;
+            MPI_Allreduce(&nGlobalMembers_, &all, 1, MPI_DOUBLE, MPI_SUM, world);
+            return nSolves_ ? all/nSolves_ : 0.0;
+        }
     }
 }
 
@@ -429,6 +436,36 @@ int FixColloidImplicit::conjugateGradients(const std::vector<int> & members,
         error->warning(FLERR, msg);
     }
     return iterations;
+}
+
+// A pair of a local atom i with a ghost j that is a periodic image of
+// another atom k of this rank is a pair of own atoms, on the neighbour
+// lists of both (newton off), once with the image of each: the copy whose
+// atom i has the smaller id is kept, as the pair (i, k) with its normal
+// (the geometry of the image), the other dropped. The atom map returns
+// the owned atom before its images. Pairs with atoms of other ranks, and
+// any pair in a run without an atom map, stay as they are.
+void FixColloidImplicit::foldPeriodicImages()
+{
+    if (!atom->map_style) return;
+    const int nlocal = atom->nlocal;
+    const int *tag = atom->tag;
+    std::size_t kept = 0;
+    for (std::size_t at = 0; at < pairs_.size(); at++)
+    {
+        PairTerm t = pairs_[at];
+        if (t.j >= nlocal)
+        {
+            const int own = atom->map(tag[t.j]);
+            if (own >= 0 && own < nlocal && own != t.i)
+            {
+                if (tag[t.i] > tag[t.j]) continue;
+                t.j = own;
+            }
+        }
+        pairs_[kept++] = t;
+    }
+    pairs_.resize(kept);
 }
 
 // Groups of the coupled particles (coupled_: with a pair or wall term)
@@ -596,6 +633,7 @@ void FixColloidImplicit::solve(double h, bool accumulateImpulse)
 void FixColloidImplicit::solveSystem(double h, bool accumulateImpulse)
 {
     collecting_ = false;
+    foldPeriodicImages();
     const int nlocal = atom->nlocal;
     const int *mask = atom->mask;
     int local[3] = {!pairs_.empty() || !walls_.empty(), 0, nWithoutDrag()}, any[3] = {0, 0, 0};
@@ -766,6 +804,7 @@ void FixColloidImplicit::solveSystem(double h, bool accumulateImpulse)
         iterations = std::max(iterations, conjugateGradients(members, pairs, false));
     }
     iterations = std::max(iterations, conjugateGradients(boundaryMembers_, boundaryPairs_, true));
+    nGlobalMembers_ += boundaryMembers_.size();
     nSolves_++;
     nIterations_ += iterations;
     maxIterations_ = std::max(maxIterations_, iterations);

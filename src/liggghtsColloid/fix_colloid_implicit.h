@@ -33,9 +33,15 @@
    that lies within the rank by conjugate gradients preconditioned with
    those blocks, on its own and in as many iterations as it needs (an
    isolated pair: one to three); the groups with a partner on another rank
-   (or a periodic image) together, in one global solve whose ghost search
-   directions come by forward communication. Every solve stops at a
-   relative residual of 1e-10 in the preconditioned norm. The result is
+   together, in one global solve whose ghost search directions come by
+   forward communication. A pair with a periodic image of one of the
+   rank's own atoms (a slab periodic in a direction the rank is not split
+   in, or any periodic box in serial) is folded onto the own atom first:
+   such groups are solved on the rank, without communication (each
+   iteration of the global solve costs a forward communication of all
+   ghosts and two reductions; slot-coater study on 2 ranks, periodic
+   span: 237 particles per step in it before, 5.9 after; README). Every
+   solve stops at a relative residual of 1e-10 in the preconditioned norm. The result is
    the same serial and parallel (newton off: a pair across a processor
    boundary is on both ranks' lists).
 
@@ -58,7 +64,8 @@
    "thermo_style custom step f_colloid_implicit[2]": [1] updates, [2] mean
    and [3] largest number of iterations, [4] updates that did not converge
    in 200 iterations (they warn once), [5] wall-clock seconds spent in the
-   updates (this rank).
+   updates (this rank), [6] particles in the global solve per update (all
+   ranks together; 0 in serial).
 
    Who attaches it: every pair style with a colloid cohesion model (at its
    init, before Modify's), and the CFD coupling (colloidImplicitUpdate()).
@@ -138,6 +145,7 @@ private:
     std::uint64_t solveKey(std::uint64_t stream, double h) const;
     void thermalImpulse(std::uint64_t key, int tag, double K, double h, double *R) const;
     double pairThermalImpulse(std::uint64_t key, int a, int b, double c, double h) const;
+    void foldPeriodicImages();
     void findGroups();
     void solvePair(const PairTerm & t);
     void solveDense(const int *members, int n, const int *pairIdx, int nPairs);
@@ -203,6 +211,7 @@ private:
     int maxIterations_;
     long nNotConverged_;
     double seconds_;                // wall-clock time of the updates [s]
+    double nGlobalMembers_;         // this rank's members of the global solves
 };
 
 }

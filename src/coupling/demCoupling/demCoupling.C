@@ -1901,7 +1901,9 @@ void Foam::demCoupling::write
                 << " conjugate-gradient iterations per DEM step on average,"
                 << " at most " << dem.sumFixVector("colloid/implicit", 2)
                 << ", not converged " << dem.sumFixVector("colloid/implicit", 3)
-                << "; " << dem.sumFixVector("colloid/implicit", 4) << " s"
+                << "; " << dem.sumFixVector("colloid/implicit", 4) << " s; "
+                << dem.sumFixVector("colloid/implicit", 5)
+                << " particles in the solve across ranks per DEM step"
                 << endl;
         }
     }
