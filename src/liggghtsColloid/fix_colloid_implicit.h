@@ -33,10 +33,12 @@
    that lies within the rank by conjugate gradients preconditioned with
    those blocks, on its own and in as many iterations as it needs (an
    isolated pair: one to three); the groups with a partner on another rank
-   together, in one global solve whose ghost search directions come by
-   forward communication. A pair with a periodic image of one of the
-   rank's own atoms (a slab periodic in a direction the rank is not split
-   in, or any periodic box in serial) is folded onto the own atom first:
+   (or an unfolded periodic image, below) together, in one global solve
+   whose ghost search directions come by forward communication. With an
+   atom map (atom_modify map array|hash; the coupling sets it), a pair
+   with a periodic image of another of the rank's own atoms (a slab
+   periodic in a direction the rank is not split in, or any periodic box
+   in serial) is folded onto the own atom first:
    such groups are solved on the rank, without communication (each
    iteration of the global solve costs a forward communication of all
    ghosts and two reductions; slot-coater study on 2 ranks, periodic
@@ -65,7 +67,7 @@
    and [3] largest number of iterations, [4] updates that did not converge
    in 200 iterations (they warn once), [5] wall-clock seconds spent in the
    updates (this rank), [6] particles in the global solve per update (all
-   ranks together; 0 in serial).
+   ranks together; 0 in serial with an atom map).
 
    Who attaches it: every pair style with a colloid cohesion model (at its
    init, before Modify's), and the CFD coupling (colloidImplicitUpdate()).

@@ -94,7 +94,8 @@ endforeach()
 
 # reliability.outflowResume[AtEnd].<serial|parallel>: a particle an outflow
 #   (massflow/mesh, delete_atoms) counted 2.5 DEM steps before a write
-#   (AtEnd: the end time, written although not a write time),
+#   within the run (AtEnd: before the end time, written although not a
+#   write time),
 #   not yet deleted by LIGGGHTS (it deletes at the next rebuild of the
 #   neighbour lists): the rebuild the coupling asks for before each write
 #   deletes it, so that a run resumed from that write does not lose it

@@ -1601,7 +1601,9 @@ void Foam::demCoupling::evolve()
         }
 
         // This step's time folder will be written (a write time, or the
-        // end time, which the solver always writes): no stale DEM state in
+        // end time as known at this step, which the solver always writes;
+        // an end decided later, e.g. by a runTimeControl function object,
+        // gets no rebuild): no stale DEM state in
         // it, and no particle that an outflow counted but has not deleted
         // yet (it would be kept by the restart and lost after a resume:
         // slot-coater study resumed at 112, 117 and 119 us, not write
@@ -1903,7 +1905,7 @@ void Foam::demCoupling::write
                 << ", not converged " << dem.sumFixVector("colloid/implicit", 3)
                 << "; " << dem.sumFixVector("colloid/implicit", 4) << " s; "
                 << dem.sumFixVector("colloid/implicit", 5)
-                << " particles in the solve across ranks per DEM step"
+                << " particles in the solve across ranks per update"
                 << endl;
         }
     }

@@ -12,12 +12,13 @@
 # delete_atoms (LIGGGHTS deletes a counted particle at the next rebuild of
 # the neighbour lists); a neighbour skin of 16 um, so that the particle's
 # own motion rebuilds the lists only every 8 um.  It crosses the plane at
-# 0.995 us, 2.5 DEM steps (2e-9 s) before the write at 1 us.
-#   part 1: from 0 to 1 us, a write time ('write': every 50 steps) or
-#           only the end time, which the solver writes anyway ('end':
-#           every 60 steps; a resumed study run ends so);
-#   part 2: resumed from 1 us to 12 us; the particle would leave the DEM box
-#           at 11 us (x = 160 um).
+# 0.995 us, 2.5 DEM steps (5e-9 s) before the write at 1 us.
+#   part 1: 'write': from 0 to 1.2 us, writing every 50 steps: 1 us is a
+#           write time within the run; 'end': from 0 to 1 us, writing
+#           every 60 steps: 1 us is written only as the end time, which
+#           the solver writes anyway (a resumed study run ends so);
+#   part 2: resumed from the write at 1 us to 12 us; the particle would
+#           leave the DEM box at 11 us (x = 160 um).
 # Asserted: both parts end without error, the moving particle removed
 # (present 1, inserted 2, removed 1) and none lost.
 #
@@ -37,8 +38,8 @@ parallel) run() { mpirun -np 2 colloidDEMFoam -parallel > "$1" 2>&1; } ;;
 *)  echo "usage: $0 serial|parallel write|end workDir" 1>&2; exit 1 ;;
 esac
 case $at in
-write) writeInterval=50 ;;
-end)   writeInterval=60 ;;
+write) writeInterval=50; endTime=1.2e-06 ;;
+end)   writeInterval=60; endTime=1e-06 ;;
 *)  echo "usage: $0 serial|parallel write|end workDir" 1>&2; exit 1 ;;
 esac
 
@@ -99,7 +100,7 @@ solid outflow
 endsolid outflow
 EOI
 sed -i 's/^value .*/value (0 0 0);/' constant/g
-foamDictionary system/controlDict -entry endTime -set 1e-06 > /dev/null
+foamDictionary system/controlDict -entry endTime -set $endTime > /dev/null
 foamDictionary system/controlDict -entry writeInterval -set $writeInterval > /dev/null
 blockMesh > log.blockMesh 2>&1
 mkdir -p 0
@@ -116,7 +117,8 @@ run log.part1 || { tail -20 log.part1; fail "part 1"; }
     || fail "no complete write at 1e-06"
 grep -a "^Particles:" log.part1 | tail -1
 
-foamDictionary system/controlDict -entry startFrom -set latestTime > /dev/null
+foamDictionary system/controlDict -entry startFrom -set startTime > /dev/null
+foamDictionary system/controlDict -entry startTime -set 1e-06 > /dev/null
 foamDictionary system/controlDict -entry endTime -set 1.2e-05 > /dev/null
 run log.part2 || { tail -12 log.part2; fail "part 2 (the resumed run) stopped"; }
 grep -a "^Particles:" log.part2 | tail -1
