@@ -16,6 +16,11 @@
 #   cross ranks are those of the unmatched fluid volume, the contact
 #   analysis still counts every particle, and a resume gives the particles
 #   of the uninterrupted run (runRankMatchingTest.sh).
+# slotCoater.inletBackflow.serial / .parallel (label agglomeration too:
+#   issue 12, Brownian runs lost fed particles this way): a particle
+#   leaving the fluid back up through the inlet next to the slot's wall is
+#   removed and counted by the tutorial's inlet outflow, not lost
+#   (runInletBackflowTest.sh).
 
 set(slotCoaterDir ${CMAKE_CURRENT_SOURCE_DIR}/slotCoater)
 set(slotCoaterWork ${CMAKE_CURRENT_BINARY_DIR}/slotCoater)
@@ -44,3 +49,13 @@ set_tests_properties(case.slotCoater.rankMatching PROPERTIES
     TIMEOUT 300 LABELS "case;slotCoater;throughput" PROCESSORS 2
     ENVIRONMENT PYTHONDONTWRITEBYTECODE=1
     FIXTURES_REQUIRED slotCoater_parallel)
+
+foreach(mode serial parallel)
+    add_test(NAME case.slotCoater.inletBackflow.${mode}
+        COMMAND ${slotCoaterDir}/runInletBackflowTest.sh ${mode}
+                ${slotCoaterWork}/inletBackflow_${mode})
+    set_tests_properties(case.slotCoater.inletBackflow.${mode} PROPERTIES
+        TIMEOUT 300 LABELS "case;slotCoater;agglomeration"
+        PASS_REGULAR_EXPRESSION "PASS")
+endforeach()
+set_tests_properties(case.slotCoater.inletBackflow.parallel PROPERTIES PROCESSORS 2)

@@ -10,7 +10,8 @@
                             substrate)
   meanContacts              mean number of contacts per particle, there
   leftThroughOutlet         particles removed at the outflow plane by the
-                            end (log.colloidDEMFoam)
+                            end (log.colloidDEMFoam; not those removed at
+                            the inlet)
   meanVelocityUnderLip      mean x-velocity [m/s] of the particles under the
                             downstream lip (slotWidth < x < slotWidth +
                             downstreamLip, in the gap), averaged over the
@@ -45,14 +46,17 @@ print("touchingParticleFraction %.12g" % (sum(last["touchingParticle"])/n))
 print("touchingWallFraction %.12g" % (sum(last["touchingWall"])/n))
 print("meanContacts %.12g" % (sum(last["nContacts"])/n))
 
+# The outlet's count: the DEM script's fix 'outflow' (its inlet fix,
+# 'inletBackflow', counts the particles that left back up the inlet)
 removed = None
 with open("log.colloidDEMFoam", errors="replace") as log:
     for line in log:
-        m = re.match(r"^Particles: present \d+, inserted \d+, removed (\d+)", line)
+        m = re.match(r"^Removed per outflow fix:(?:.*,)? outflow (\d+)", line)
         if m:
             removed = int(m.group(1))
 if removed is None:
-    sys.exit("quantitiesOfInterest: no 'Particles: ... removed' line in log.colloidDEMFoam")
+    sys.exit("quantitiesOfInterest: no 'Removed per outflow fix: ... outflow N'"
+             " line in log.colloidDEMFoam")
 print("leftThroughOutlet %d" % removed)
 
 means = []

@@ -1788,15 +1788,33 @@ void Foam::demCoupling::write
         locator_.nGlobalSearches();
 
         // Removed: counted by the DEM's outflow fixes (massflow/mesh with
-        // delete_atoms yes), independently of the two other counts
-        const label nRemoved =
-            label(std::lround(dem.sumFixVector("massflow/mesh", 5)));
+        // delete_atoms yes), independently of the two other counts; each
+        // fix's count too (an outlet, and e.g. an inlet that takes the
+        // particles diffusing back up out of the fluid)
+        const std::vector<std::pair<std::string, double>> removedPerFix =
+            dem.fixVectors("massflow/mesh", 5);
+        label nRemoved = 0;
+        for (const auto& idCount : removedPerFix)
+        {
+            nRemoved += label(std::lround(idCount.second));
+        }
 
         Info<< "Particles: present " << nPresent
             << ", inserted " << nInserted_
             << ", removed " << nRemoved << "; written " << nWritten
             << " (lagrangian/" << cloudName_ << "), "
             << nPresent - nWritten << " outside the fluid" << endl;
+        if (!removedPerFix.empty())
+        {
+            Info<< "Removed per outflow fix:";
+            for (const auto& idCount : removedPerFix)
+            {
+                Info<< (&idCount == &removedPerFix.front() ? " " : ", ")
+                    << idCount.first.c_str() << ' '
+                    << label(std::lround(idCount.second));
+            }
+            Info<< endl;
+        }
         if (contacts_.valid())
         {
             Info<< "Contacts: " << contacts_->summary().c_str() << endl;

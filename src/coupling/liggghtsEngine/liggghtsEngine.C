@@ -360,10 +360,26 @@ double Foam::liggghtsEngine::sumFixVector
     const int index
 ) const
 {
+    double sum = 0;
+    for (const auto& idValue : fixVectors(style, index))
+    {
+        sum += idValue.second;
+    }
+    return sum;
+}
+
+
+std::vector<std::pair<std::string, double>>
+Foam::liggghtsEngine::fixVectors
+(
+    const std::string& style,
+    const int index
+) const
+{
     LAMMPS_NS::Modify* modify = engine(lmp_)->modify;
     const int n = modify->n_fixes_style_strict(style.c_str());
 
-    double sum = 0;
+    std::vector<std::pair<std::string, double>> values;
     for (int rank = 0; rank < n; ++rank)
     {
         LAMMPS_NS::Fix* fix =
@@ -376,9 +392,9 @@ double Foam::liggghtsEngine::sumFixVector
               + ") has no global vector element " + std::to_string(index)
             );
         }
-        sum += fix->compute_vector(index);
+        values.emplace_back(fix->id, fix->compute_vector(index));
     }
-    return sum;
+    return values;
 }
 
 
