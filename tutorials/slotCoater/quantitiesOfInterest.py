@@ -47,16 +47,24 @@ print("touchingWallFraction %.12g" % (sum(last["touchingWall"])/n))
 print("meanContacts %.12g" % (sum(last["nContacts"])/n))
 
 # The outlet's count: the DEM script's fix 'outflow' (its inlet fix,
-# 'inletBackflow', counts the particles that left back up the inlet)
+# 'inletBackflow', counts the particles that left back up the inlet); a
+# log from before the per-fix line (2026-12-05), when the outlet was the
+# only outflow: the total
 removed = None
+total = None
 with open("log.colloidDEMFoam", errors="replace") as log:
     for line in log:
         m = re.match(r"^Removed per outflow fix:(?:.*,)? outflow (\d+)", line)
         if m:
             removed = int(m.group(1))
+        m = re.match(r"^Particles: present \d+, inserted \d+, removed (\d+)", line)
+        if m:
+            total = int(m.group(1))
+if removed is None:
+    removed = total
 if removed is None:
     sys.exit("quantitiesOfInterest: no 'Removed per outflow fix: ... outflow N'"
-             " line in log.colloidDEMFoam")
+             " or 'Particles: ... removed N' line in log.colloidDEMFoam")
 print("leftThroughOutlet %d" % removed)
 
 means = []

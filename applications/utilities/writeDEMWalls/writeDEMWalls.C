@@ -10,7 +10,7 @@ Group
 Description
     Write boundary patches of the case's mesh as triangulated ASCII STL
     files in DEM length units, for LIGGGHTS' 'fix mesh/surface' (walls),
-    'fix insert/stream' (inlet) and 'fix massflow/mesh' (outlet).
+    'fix massflow/mesh' (removal planes: an outlet, an inlet).
 
     One file per patch, <dir>/<patch>.stl, normals out of the fluid.  Runs
     serial or on a decomposed case (-parallel): the master writes each file

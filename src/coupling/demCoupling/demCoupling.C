@@ -1807,11 +1807,10 @@ void Foam::demCoupling::write
         if (!removedPerFix.empty())
         {
             Info<< "Removed per outflow fix:";
-            for (const auto& idCount : removedPerFix)
+            for (size_t i = 0; i < removedPerFix.size(); ++i)
             {
-                Info<< (&idCount == &removedPerFix.front() ? " " : ", ")
-                    << idCount.first.c_str() << ' '
-                    << label(std::lround(idCount.second));
+                Info<< (i ? ", " : " ") << removedPerFix[i].first.c_str()
+                    << ' ' << label(std::lround(removedPerFix[i].second));
             }
             Info<< endl;
         }

@@ -118,7 +118,7 @@ def main():
           "feed: insertions %s, expected %s (%.4g per interval)" % (fed, expectedFeed, rate*T))
     check(inserted - fill == sum(fed),
           "fed %d = the insertions' %d" % (inserted - fill, sum(fed)))
-    check(removed > 0, "removed %d particles through the outlet" % removed)
+    check(removed > 0, "removed %d particles through the outflows" % removed)
 
     velocity = particleCloud.read(files[-1])["velocity"]
     mean = [sum(v[k] for v in velocity)/len(velocity) for k in range(3)]

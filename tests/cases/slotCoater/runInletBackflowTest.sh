@@ -9,12 +9,14 @@
 #
 # The tutorial at test size (testSizeCase.sh: inlet plane y = 15 um, the
 # slot from x = 0 to 20 um), its own DEM script with, appended for the
-# test, the particles within 0.5 um of (0.3, 14.8, span/2) um deleted and
+# test, the particles within 0.5 um of (0.3, 14.8, span/2) um (0.2 um
+# below the inlet) deleted and
 # one particle placed at x = 0.2 um (0.05 um from the slot's upstream
 # wall), 0.05 um below the inlet plane, moving up at 50 m/s (um/us).  The
 # implicit drag of the still liquid stops it within about 50 m/s x 12.5 ns
 # (its momentum relaxation time m/(6 pi mu a)) = 0.6 um: it crosses the
-# plane in the first few DEM steps and keeps about 90 % of its speed.
+# plane within about 10 DEM steps (1 ns) and keeps about 90 % of its
+# speed.
 #
 # Asserted: the run (Allrun, 0.2 us) ends without error (the coupling
 # checks present = inserted - removed at every write: FatalError on a lost
@@ -38,7 +40,8 @@ cat >> constant/DEM/in.liggghts <<'EOI'
 # the inlet next to the slot's upstream wall
 variable        backflowZ equal 0.5*${span}
 variable        backflowY equal ${yTop}-0.05
-region          backflowSpot sphere 0.3 14.8 ${backflowZ} 0.5 units box
+variable        backflowSpotY equal ${yTop}-0.2
+region          backflowSpot sphere 0.3 ${backflowSpotY} ${backflowZ} 0.5 units box
 delete_atoms    region backflowSpot
 create_atoms    1 single 0.2 ${backflowY} ${backflowZ} units box
 group           backflow region backflowSpot
