@@ -10,9 +10,9 @@
 # The tutorial at test size (testSizeCase.sh: inlet plane y = 15 um, the
 # slot from x = 0 to 20 um), its own DEM script with, appended for the
 # test, the particles within 0.5 um of (0.3, 14.8, span/2) um (0.2 um
-# below the inlet) deleted and
-# one particle placed at x = 0.2 um (0.05 um from the slot's upstream
-# wall), 0.05 um below the inlet plane, moving up at 50 m/s (um/us).  The
+# below the inlet) deleted and one particle placed at x = 0.2 um (0.05 um
+# from the slot's upstream wall), 0.05 um below the inlet plane, moving
+# up at 50 m/s (um/us).  The
 # implicit drag of the still liquid stops it within about 50 m/s x 12.5 ns
 # (its momentum relaxation time m/(6 pi mu a)) = 0.6 um: it crosses the
 # plane within about 10 DEM steps (1 ns) and keeps about 90 % of its
