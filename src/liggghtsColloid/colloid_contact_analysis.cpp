@@ -140,6 +140,8 @@ ColloidContactAnalysis::ColloidContactAnalysis(LAMMPS *lmp, const Settings &sett
 {
     if (!(settings.touchingGap >= 0) || !(settings.agglomerateGap >= 0))
         error->all(FLERR, "colloid contact analysis: the touching and agglomerate gaps must be >= 0");
+    if (!(settings.releaseGap >= settings.touchingGap))
+        error->all(FLERR, "colloid contact analysis: the release gap must be >= the touching gap");
     if (modify->find_fix(labelFix) < 0)
     {
         // scalar, not in restart files, forwarded to ghosts, no reverse comm
@@ -158,12 +160,40 @@ int ColloidContactAnalysis::owner(uint64_t key) const
     return static_cast<int>(mix(key) % static_cast<uint64_t>(comm->nprocs));
 }
 
-// The keys sent to their owners: those this rank owns, from every rank
-std::vector<uint64_t> ColloidContactAnalysis::sendToOwners(const std::vector<uint64_t> &keys) const
+// Records of 'width' values, each led by its key, sent to the keys'
+// owners: those this rank owns, from every rank (and the sending rank of
+// each in from)
+std::vector<uint64_t> ColloidContactAnalysis::sendToOwners(const std::vector<uint64_t> &records,
+                                                           int width, std::vector<int> *from) const
 {
     std::vector<std::vector<uint64_t>> out(comm->nprocs);
-    for (uint64_t k : keys) out[owner(k)].push_back(k);
-    return exchange(world, out, 1);
+    for (size_t k = 0; k < records.size(); k += width)
+    {
+        std::vector<uint64_t> &o = out[owner(records[k])];
+        o.insert(o.end(), records.begin() + k, records.begin() + k + width);
+    }
+    return exchange(world, out, width, from);
+}
+
+namespace {
+// flags of a (key, flags) record sent to the key's owner
+const uint64_t touchingNow = 1;   // below the touching gap (else: within the release gap)
+const uint64_t counting = 2;      // the rank that counts the pair (a pair with a ghost is
+                                  // seen by two; the other asks whether it is a contact)
+}
+
+// The keys of the received (key, flags) records that are contacts now:
+// touching, or within the release gap and a contact at the last analysis
+std::vector<uint64_t> ColloidContactAnalysis::contactsNow(const std::unordered_map<uint64_t, double> &active,
+                                                      const std::vector<uint64_t> &keyFlags) const
+{
+    std::vector<uint64_t> now;
+    for (size_t k = 0; k < keyFlags.size(); k += 2)
+    {
+        const uint64_t key = keyFlags[k], flags = keyFlags[k + 1];
+        if ((flags & counting) && ((flags & touchingNow) || active.count(key))) now.push_back(key);
+    }
+    return now;
 }
 
 // Contacts now against the histories: formed (new keys), broken (keys no
@@ -206,9 +236,14 @@ ColloidContactAnalysis::Result ColloidContactAnalysis::analyse(double t, const i
     const double *r = atom->radius;
     const int *tag = atom->tag;
 
+    // every pair within the release gap: one touching is a contact; one
+    // between the touching and the release gap is if it was at the last
+    // analysis, which the key's owner knows
+    struct Held { uint64_t key; int i, j; };
+    std::vector<Held> held;
     contacts_.assign(nlocal, 0);
     bonds_.clear();
-    std::vector<uint64_t> pairKeys, wallKeys;
+    std::vector<uint64_t> pairRecords, wallRecords;
     for (int ii = 0; ii < list->inum; ii++)
     {
         const int i = list->ilist[ii];
@@ -220,29 +255,64 @@ ColloidContactAnalysis::Result ColloidContactAnalysis::analyse(double t, const i
             const double dx = x[i][0] - x[j][0], dy = x[i][1] - x[j][1], dz = x[i][2] - x[j][2];
             const double gap = std::sqrt(dx*dx + dy*dy + dz*dz) - r[i] - r[j];
             const double rMin = std::min(r[i], r[j]);
-            if (gap < settings_.agglomerateGap*rMin) bonds_.push_back(std::make_pair(i, j));
-            if (gap >= settings_.touchingGap*rMin) continue;
-            contacts_[i]++;
-            if (j < nlocal) contacts_[j]++;
+            const bool touching = gap < settings_.touchingGap*rMin;
+            if (touching || gap < settings_.agglomerateGap*rMin) bonds_.push_back(std::make_pair(i, j));
+            if (gap >= settings_.releaseGap*rMin) continue;
             // a pair with a ghost is in both ranks' lists: counted by the
             // atom with the smaller id
-            if (j < nlocal || tag[i] < tag[j]) pairKeys.push_back(pairKey(tag[i], tag[j]));
+            const uint64_t key = pairKey(tag[i], tag[j]);
+            const bool counts = j < nlocal || tag[i] < tag[j];
+            if (touching)
+            {
+                contacts_[i]++;
+                if (j < nlocal) contacts_[j]++;
+            }
+            else held.push_back({key, i, j});
+            if (counts || !touching)
+            {
+                pairRecords.push_back(key);
+                pairRecords.push_back((touching ? touchingNow : 0) | (counts ? counting : 0));
+            }
         }
     }
     if (touchingWall)
         for (int i = 0; i < nlocal; i++)
-            if (touchingWall[i]) wallKeys.push_back(static_cast<uint64_t>(tag[i]));
+            if (touchingWall[i])
+            {
+                wallRecords.push_back(static_cast<uint64_t>(tag[i]));
+                wallRecords.push_back((touchingWall[i] == 1 ? touchingNow : 0) | counting);
+            }
 
     Result result;
     long pairFormed = 0, pairBroken = 0, wallFormed = 0, wallBroken = 0;
     std::vector<double> pairDurations, wallDurations;
-    update(pairs_, sendToOwners(pairKeys), t, pairFormed, pairBroken, pairDurations);
-    update(walls_, sendToOwners(wallKeys), t, wallFormed, wallBroken, wallDurations);
+    std::vector<int> from;
+    const std::vector<uint64_t> pairIn = sendToOwners(pairRecords, 2, &from);
+    const std::vector<uint64_t> pairsNow = contactsNow(pairs_, pairIn);
+    const std::vector<uint64_t> wallsNow = contactsNow(walls_, sendToOwners(wallRecords, 2));
+
+    // the held pairs that are contacts, back to the ranks that asked
+    const std::unordered_set<uint64_t> isContact(pairsNow.begin(), pairsNow.end());
+    std::vector<std::vector<uint64_t>> reply(comm->nprocs);
+    for (size_t k = 0; k < pairIn.size(); k += 2)
+        if (!(pairIn[k + 1] & touchingNow) && isContact.count(pairIn[k])) reply[from[k/2]].push_back(pairIn[k]);
+    const std::vector<uint64_t> heldContacts = exchange(world, reply, 1);
+    const std::unordered_set<uint64_t> stillInContact(heldContacts.begin(), heldContacts.end());
+    for (const Held &h : held)
+    {
+        if (!stillInContact.count(h.key)) continue;
+        contacts_[h.i]++;
+        if (h.j < nlocal) contacts_[h.j]++;
+        bonds_.push_back(std::make_pair(h.i, h.j));
+    }
+
+    update(pairs_, pairsNow, t, pairFormed, pairBroken, pairDurations);
+    update(walls_, wallsNow, t, wallFormed, wallBroken, wallDurations);
     first_ = false;
 
     result.particles = sumOnMaster(world, nlocal);
-    result.pairContacts = sumOnMaster(world, static_cast<long>(pairKeys.size()));
-    result.wallContacts = sumOnMaster(world, static_cast<long>(wallKeys.size()));
+    result.pairContacts = sumOnMaster(world, static_cast<long>(pairsNow.size()));
+    result.wallContacts = sumOnMaster(world, static_cast<long>(wallsNow.size()));
     result.pairFormed = sumOnMaster(world, pairFormed);
     result.pairBroken = sumOnMaster(world, pairBroken);
     result.wallFormed = sumOnMaster(world, wallFormed);
@@ -429,10 +499,11 @@ struct Handle
 
 }
 
-void *colloidContactAnalysisNew(void *lmp, double touchingGap, double agglomerateGap)
+void *colloidContactAnalysisNew(void *lmp, double touchingGap, double releaseGap, double agglomerateGap)
 {
     ColloidContactAnalysis::Settings s;
     s.touchingGap = touchingGap;
+    s.releaseGap = releaseGap;
     s.agglomerateGap = agglomerateGap;
     return new Handle(static_cast<LAMMPS *>(lmp), s);
 }

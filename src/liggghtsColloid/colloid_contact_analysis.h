@@ -4,9 +4,13 @@
 
    Touching: two particles whose gap (centre distance minus both radii) is
    below touchingGap times the smaller radius; a particle and a wall by the
-   caller's flag (the DEM has no wall distance of its own). An agglomerate
-   is a connected cluster of at least two particles bonded by gaps below
-   agglomerateGap times the smaller radius (the same threshold by default).
+   caller's flag (the DEM has no wall distance of its own). A contact, once
+   formed, lasts until the gap reaches releaseGap times the smaller radius
+   (>= touchingGap; the same by default): a pair held at the touching gap
+   whose gap wavers across it (Brownian motion, a pair rolling in shear)
+   is one contact, not many short ones. An agglomerate is a connected
+   cluster of at least two particles bonded by contacts and by gaps below
+   agglomerateGap times the smaller radius (touchingGap by default).
 
    What each analysis gives (all ranks together, on the master: the rank that is
    MPI_COMM_WORLD's rank 0, the coupled solver's master):
@@ -46,6 +50,7 @@ public:
     struct Settings
     {
         double touchingGap = 0.01;      // of the smaller radius
+        double releaseGap = 0.01;       // of it; >= touchingGap
         double agglomerateGap = 0.01;   // of the smaller radius
     };
 
@@ -66,10 +71,11 @@ public:
     // (fix id colloidAgglomerate): call before the first run
     ColloidContactAnalysis(LAMMPS *lmp, const Settings &settings);
 
-    // One analysis at time t [time units]; touchingWall: a flag per local
-    // atom, or NULL (no wall contacts). Needs a pair style with a
-    // neighbour list that is valid for the current positions (between
-    // runs).
+    // One analysis at time t [time units]; touchingWall: per local atom
+    // 1 touching a wall, 2 within the release gap of one (a contact
+    // already formed lasts), 0 neither; or NULL (no wall contacts). Needs
+    // a pair style with a neighbour list that is valid for the current
+    // positions (between runs) and reaches the release gap.
     Result analyse(double t, const int *touchingWall);
 
     // Per local atom, from the last analysis: pair contacts, agglomerate
@@ -107,7 +113,10 @@ private:
     std::vector<std::pair<int, int>> bonds_;
 
     int owner(uint64_t key) const;
-    std::vector<uint64_t> sendToOwners(const std::vector<uint64_t> &keys) const;
+    std::vector<uint64_t> sendToOwners(const std::vector<uint64_t> &records, int width,
+                                       std::vector<int> *from = NULL) const;
+    std::vector<uint64_t> contactsNow(const std::unordered_map<uint64_t, double> &active,
+                                      const std::vector<uint64_t> &keyFlags) const;
     void update(std::unordered_map<uint64_t, double> &active, const std::vector<uint64_t> &now,
                 double t, long &formed, long &broken, std::vector<double> &durations);
     void findAgglomerates(Result &result);

@@ -23,15 +23,17 @@ struct ColloidContactCounts
 };
 
 // lmp: the LAMMPS_NS::LAMMPS instance; gaps as fractions of the smaller
-// radius. Create before the first run.
+// radius (releaseGap >= touchingGap: a contact lasts until the gap
+// reaches it). Create before the first run.
 __attribute__((visibility("default")))
-void *colloidContactAnalysisNew(void *lmp, double touchingGap, double agglomerateGap);
+void *colloidContactAnalysisNew(void *lmp, double touchingGap, double releaseGap, double agglomerateGap);
 
 __attribute__((visibility("default")))
 void colloidContactAnalysisFree(void *analysis);
 
 // t: time in any unit (the durations come out in it); touchingWall: one
-// flag per local atom, or NULL
+// flag per local atom (1 touching a wall, 2 within the release gap of
+// one, 0 neither), or NULL
 __attribute__((visibility("default")))
 void colloidContactAnalyse(void *analysis, double t, const int *touchingWall,
                            struct ColloidContactCounts *counts);

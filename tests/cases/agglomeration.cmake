@@ -62,6 +62,20 @@ foreach(mode serial parallel)
 endforeach()
 set_tests_properties(case.agglomeration.periodicCrossing.parallel PROPERTIES PROCESSORS 2)
 
+# agglomeration.releaseGap: a pair contact across the DEM's ranks' boundary
+# and a wall contact, their gaps wavering between 1 and 13 nm, last from the
+# touching gap (5 nm) to the release gap (10 nm), each as long as the
+# closed form within one analysis interval, both ranks counting the pair's
+# contact and agglomerate while held (runReleaseGapTest.sh,
+# checkReleaseGap.py).
+foreach(mode serial parallel)
+    add_test(NAME case.agglomeration.releaseGap.${mode}
+        COMMAND ${agglomerationDir}/runReleaseGapTest.sh ${mode} ${agglomerationWork}/releaseGap_${mode})
+    set_tests_properties(case.agglomeration.releaseGap.${mode} PROPERTIES
+        TIMEOUT 120 LABELS "case;agglomeration" ENVIRONMENT PYTHONDONTWRITEBYTECODE=1)
+endforeach()
+set_tests_properties(case.agglomeration.releaseGap.parallel PROPERTIES PROCESSORS 2)
+
 # agglomeration.slotCoaterPeriodicFill: the slot coater's DEM box is
 # periodic in z, and its fill keeps fillMinimumGap between every two
 # particles (across the periodic face too) and from the walls, with no

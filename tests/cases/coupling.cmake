@@ -35,7 +35,8 @@ foreach(variant missingKeyword negativeDiameter negativeDensity unknownDragModel
                 resumeIncomplete misspeltKeyword misspeltTopKeyword
                 diameterMismatch lostParticle particleOutsideBox
                 coincidentParticles purgeWrite
-                feedUnknownPatch feedSolidsFraction feedInterval feedNoInflow)
+                feedUnknownPatch feedSolidsFraction feedInterval feedNoInflow
+                releaseBelowTouching)
     add_test(NAME case.coupling.badInput.${variant}
         COMMAND ${couplingDir}/runBadInputTest.sh ${variant} ${couplingWork}/badInput_${variant})
     set_tests_properties(case.coupling.badInput.${variant} PROPERTIES

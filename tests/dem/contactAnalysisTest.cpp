@@ -37,6 +37,16 @@
     restart, count as formed: three contacts formed and broken, each
     lasting the closed form within one interval. A file of another number of ranks is
     refused (EINVAL) and a missing one reported (ENOENT).
+
+    waveringContact: sphere B wiggles along the line of centres, its gap
+    from A 7 - 6 sin(2 pi t/P) nm (1 to 13 nm), P = 0.1 us, three periods;
+    its wall flag follows the same gap. Touching below 5 nm: each period a
+    contact forms at phase asin(1/3)/(2 pi); it ends when the gap is back
+    at 5 nm without a release gap, at 10 nm (phase 7/12) with releaseGap
+    0.02 R. Three pair and three wall contacts formed and ended, each as
+    long as its closed form within one interval; while held between 5 and
+    10 nm, one contact each and one agglomerate of 2 (bonds only by
+    contacts).
 \*---------------------------------------------------------------------------*/
 #include "liggghtsRun.H"
 #include "colloid_contact_analysis.h"
@@ -243,4 +253,93 @@ TEST(contactAnalysis, durationAcrossRestart)
     std::printf("contact durations %.6f, %.6f and %.6f us, closed form %.6f us\n",
                 durations[0], durations[1], durations[2], duration);
     for (double d : durations) EXPECT_NEAR(d, duration, interval);
+}
+
+// The gap of B from A of the wavering pair (waveringContact), um
+double gapOf(const LiggghtsRun& run)
+{
+    const double* a = run.x(1);
+    const double* b = run.x(2);
+    return std::sqrt(std::pow(b[0] - a[0], 2) + std::pow(b[1] - a[1], 2) + std::pow(b[2] - a[2], 2)) - 2*R;
+}
+
+TEST(contactAnalysis, waveringContact)
+{
+    // B wiggles along the line of centres: gap = g0 - amp sin(2 pi t/P),
+    // 1 to 13 nm, three periods. Touching below 5 nm (sin > 1/3), so a
+    // contact forms at phase f1 = asin(1/3)/(2 pi) of each period; without
+    // a release gap it ends when the gap is back at 5 nm (phase 1/2 - f1),
+    // with one of 10 nm (0.02 R) when the gap reaches 10 nm (sin = -1/2,
+    // phase 7/12). B's "wall" flag follows the same gaps, so its wall
+    // contact does the same. Analysed every 1e-3 us; agglomerate bonds
+    // only by contacts (agglomerateGap = touchingGap): while the gap is
+    // between 5 and 10 nm and the contact lasts, A and B are one
+    // agglomerate with one contact each.
+    const double g0 = 0.007, amp = 0.006;   // um
+    const double period = 0.1;              // us
+    const double interval = 1e-3;           // us: 10 steps of 1e-4
+    const double f1 = std::asin(1.0/3)/(2*M_PI);
+
+    for (const double releaseGap : {0.01, 0.02})
+    {
+        SCOPED_TRACE("releaseGap " + std::to_string(releaseGap));
+        const double end = releaseGap > 0.01 ? 7.0/12 : 0.5 - f1;   // phase
+        const double duration = (end - f1)*period;
+
+        LiggghtsRun run;
+        run.commands(LiggghtsRun::header(5.0) + materials());
+        createAtoms(run, {{0.0, 0.0, 0.0}, {2*R + g0, 0.0, 0.0}});
+        std::ostringstream wiggle;
+        wiggle << "group mover id 2\nfix move mover move wiggle " << -amp << " 0 0 " << period;
+        run.commands(wiggle.str());
+        ColloidContactAnalysis::Settings s;
+        s.touchingGap = 0.01;
+        s.releaseGap = releaseGap;
+        s.agglomerateGap = 0.01;
+        ColloidContactAnalysis analysis(run.instance(), s);
+        run.commands("run 0");
+
+        long formed = 0, broken = 0, wallFormed = 0, wallBroken = 0, heldChecked = 0;
+        std::vector<double> durations, wallDurations;
+        for (int k = 0; k <= 300; k++)
+        {
+            if (k > 0) run.commands("run 10 pre no post no");
+            const double gap = gapOf(run);
+            std::vector<int> wall(2, 0);
+            wall[run.instance()->atom->map(2)] = gap < 0.01*R ? 1 : gap < releaseGap*R ? 2 : 0;
+            const ColloidContactAnalysis::Result r = analysis.analyse(k*interval, wall.data());
+            formed += r.pairFormed;
+            broken += r.pairBroken;
+            wallFormed += r.wallFormed;
+            wallBroken += r.wallBroken;
+            durations.insert(durations.end(), r.pairDurations.begin(), r.pairDurations.end());
+            wallDurations.insert(wallDurations.end(), r.wallDurations.begin(), r.wallDurations.end());
+
+            // inside the contact's window (one interval from its ends)
+            // and not touching: held by the release gap
+            const double phase = std::fmod(k*interval, period)/period;
+            if (phase > f1 + interval/period && phase < end - interval/period && gap >= 0.01*R)
+            {
+                heldChecked++;
+                EXPECT_EQ(r.pairContacts, 1) << "t " << k*interval;
+                EXPECT_EQ(r.wallContacts, 1) << "t " << k*interval;
+                ASSERT_EQ(r.byContacts.size(), 2u) << "t " << k*interval;
+                EXPECT_EQ(r.byContacts[1], 2) << "t " << k*interval;
+                EXPECT_EQ(r.agglomerates, 1) << "t " << k*interval;
+            }
+        }
+        std::printf("release gap %.2f R: %zu contacts, durations %.6f .. %.6f us, closed form "
+                    "%.6f us; %ld analyses while held\n", releaseGap, durations.size(),
+                    durations.empty() ? 0.0 : durations.front(),
+                    durations.empty() ? 0.0 : durations.back(), duration, heldChecked);
+        if (releaseGap > 0.01) EXPECT_GT(heldChecked, 30);
+        EXPECT_EQ(formed, 3);
+        EXPECT_EQ(broken, 3);
+        EXPECT_EQ(wallFormed, 3);
+        EXPECT_EQ(wallBroken, 3);
+        ASSERT_EQ(durations.size(), 3u);
+        ASSERT_EQ(wallDurations.size(), 3u);
+        for (double d : durations) EXPECT_NEAR(d, duration, interval);
+        for (double d : wallDurations) EXPECT_NEAR(d, duration, interval);
+    }
 }

@@ -7,14 +7,16 @@ case's last write (results/where.md: each agglomerate's particles by id,
 its centre, height above the substrate and part of the die; where.png:
 the centres on the die's outline): from the written particle cloud, the
 particles with agglomerateSize > 1 grouped as the run's analysis groups
-them (gap below contactAnalysis/agglomerateGap of the smaller radius,
-constant/couplingProperties; across the periodic span).
+them (gap below contactAnalysis/agglomerateGap of the smaller radius, or
+below releaseGap, where a contact lasts: constant/couplingProperties;
+across the periodic span).
 
     studyReport.py studyDir resultsDir
 
 Pairs held near contact (results/gaps.md, gaps.png): at every write of
 each case, the pairs of particles closer than 50 nm that do not touch
-(surface gap at least the agglomerate gap of the smaller radius), the
+(surface gap at least the agglomerate gap of the smaller radius, and not
+a contact that the release gap holds), the
 closest of them, and how many lie within 5, 10, 20 and 50 nm: the pairs
 the shear has brought together and the double layer holds apart, which
 the contact counts do not show.
@@ -93,9 +95,18 @@ def geometry(case):
 
 def agglomerate_gap(case):
     """The analysis' bond gap over the smaller radius (couplingProperties
-    contactAnalysis/agglomerateGap; the coupling's default 0.01)"""
-    d = foamDict.read(os.path.join(case, "constant", "couplingProperties"))
-    return float(d.get("contactAnalysis", {}).get("agglomerateGap", 0.01))
+    contactAnalysis/agglomerateGap; the coupling's default: touchingGap,
+    whose default is 0.01)"""
+    d = foamDict.read(os.path.join(case, "constant", "couplingProperties")).get("contactAnalysis", {})
+    return float(d.get("agglomerateGap", d.get("touchingGap", 0.01)))
+
+
+def release_gap(case):
+    """The gap over the smaller radius up to which a contact, once formed,
+    lasts and bonds its agglomerate (contactAnalysis/releaseGap; default
+    touchingGap), or the bond gap if that is larger"""
+    d = foamDict.read(os.path.join(case, "constant", "couplingProperties")).get("contactAnalysis", {})
+    return max(float(d.get("releaseGap", d.get("touchingGap", 0.01))), agglomerate_gap(case))
 
 
 def part_of_die(g, x, y):
@@ -110,14 +121,26 @@ def part_of_die(g, x, y):
     return "under the downstream lip"
 
 
-def agglomerates(case):
-    """(write time [s], [(ids, centre [m], die part)]) at the case's last
-    write: the particles with agglomerateSize > 1 joined where they touch"""
-    g = geometry(case)
-    last = particleCloud.latest(case)
-    cloud = particleCloud.read(last)
-    members = [k for k, n in enumerate(cloud["agglomerateSize"]) if n > 1]
+def periodic_offset(cloud, span, a, b):
+    """Position of particle a relative to b [m], across the periodic span"""
+    d = [cloud["position"][a][j] - cloud["position"][b][j] for j in range(3)]
+    d[2] -= span*round(d[2]/span)
+    return d
+
+
+def group_agglomerated(case, cloud):
+    """The particles of a cloud with agglomerateSize > 1 joined as the
+    run's analysis joined them: (members, their group's root by member,
+    bonds by member).  Bonded: below the bond gap; or within the release
+    gap, where a contact once formed lasts, if the particles' agglomerate
+    sizes allow it (two agglomerates that near each other without a
+    contact stay apart)"""
+    span = geometry(case)["span"]
+    size = cloud["agglomerateSize"]
+    members = [k for k, n in enumerate(size) if n > 1]
     root = {k: k for k in members}
+    count = {k: 1 for k in members}
+    bonds = {k: [] for k in members}
 
     def find(k):
         while root[k] != k:
@@ -125,24 +148,45 @@ def agglomerates(case):
             k = root[k]
         return k
 
-    def offset(a, b):
-        d = [cloud["position"][a][j] - cloud["position"][b][j] for j in range(3)]
-        d[2] -= g["span"]*round(d[2]/g["span"])   # periodic span
-        return d
+    def join(a, b):
+        ra, rb = find(a), find(b)
+        if ra != rb:
+            root[ra] = rb
+            count[rb] += count[ra]
+        bonds[a].append(b)
+        bonds[b].append(a)
 
-    gap = agglomerate_gap(case)
-    bonds = {k: [] for k in members}
+    bond, release = agglomerate_gap(case), release_gap(case)
+    held = []
     for i, a in enumerate(members):
         for b in members[i + 1:]:
-            d = offset(a, b)
+            d = periodic_offset(cloud, span, a, b)
             ra, rb = cloud["radius"][a], cloud["radius"][b]
-            if sum(x*x for x in d)**0.5 - ra - rb < gap*min(ra, rb):
-                root[find(a)] = find(b)
-                bonds[a].append(b)
-                bonds[b].append(a)
+            gap = sum(x*x for x in d)**0.5 - ra - rb
+            if gap < bond*min(ra, rb):
+                join(a, b)
+            elif gap < release*min(ra, rb):
+                held.append((a, b))
+    for a, b in held:
+        if find(a) != find(b) and count[find(a)] + count[find(b)] <= min(size[a], size[b]):
+            join(a, b)
+    return members, {k: find(k) for k in members}, bonds
+
+
+def agglomerates(case):
+    """(write time [s], [(ids, centre [m], die part)]) at the case's last
+    write: the particles with agglomerateSize > 1 joined where they touch"""
+    g = geometry(case)
+    last = particleCloud.latest(case)
+    cloud = particleCloud.read(last)
+    members, root, bonds = group_agglomerated(case, cloud)
+
+    def offset(a, b):
+        return periodic_offset(cloud, g["span"], a, b)
+
     groups = {}
     for k in members:
-        groups.setdefault(find(k), []).append(k)
+        groups.setdefault(root[k], []).append(k)
     found = []
     for ks in groups.values():
         # each member's place relative to the first, summed along the bonds
@@ -175,7 +219,16 @@ def close_pairs(case, path):
     i, j, gap = pairGaps.close_pairs(cloud["position"], cloud["radius"],
                                      geometry(case)["span"], NEAR_GAPS[-1])
     r = np.array(cloud["radius"])
-    apart = gap >= agglomerate_gap(case)*np.minimum(r[i], r[j])
+    r_min = np.minimum(r[i], r[j])
+    # not touching: beyond the bond gap, and not a contact that the release
+    # gap holds (within it, in one agglomerate)
+    apart = gap >= agglomerate_gap(case)*r_min
+    maybe_held = np.nonzero(apart & (gap < release_gap(case)*r_min))[0]
+    if len(maybe_held):
+        root = group_agglomerated(case, cloud)[1]
+        for k in maybe_held:
+            a, b = int(i[k]), int(j[k])
+            apart[k] = a not in root or root[a] != root.get(b)
     held = gap[apart]
     return [int((held < g).sum()) for g in NEAR_GAPS], float(held[0] if len(held) else "nan")
 
@@ -188,6 +241,8 @@ def close_pair_series(case):
     folder = os.path.join(case, "postProcessing", "closePairs")
     path = os.path.join(folder, "closePairs.csv")
     touching = "# touching below %r of the smaller radius" % agglomerate_gap(case)
+    if release_gap(case) > agglomerate_gap(case):
+        touching += "; contacts held to %r" % release_gap(case)
     header = "time,closestGap," + ",".join("within%gnm" % (g*1e9) for g in NEAR_GAPS)
     known = {}
     if os.path.exists(path):

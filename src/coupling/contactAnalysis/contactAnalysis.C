@@ -27,7 +27,12 @@ Foam::contactAnalysis::contactAnalysis
     interval_(props.contactInterval()),
     lastTime_(-1)
 {
-    handle_ = dem.newContactAnalysis(props.touchingGap(), props.agglomerateGap());
+    handle_ = dem.newContactAnalysis
+    (
+        props.touchingGap(),
+        props.releaseGap(),
+        props.agglomerateGap()
+    );
 
     if (Pstream::master())
     {
@@ -44,8 +49,9 @@ Foam::contactAnalysis::contactAnalysis
         }
         contacts_()
             << "# touching: gap < " << props.touchingGap()
-            << " x the smaller radius; agglomerate bonds: gap < "
-            << props.agglomerateGap() << " x it; every "
+            << " x the smaller radius; released: gap >= "
+            << props.releaseGap() << " x it; agglomerate bonds: contacts"
+            << " and gaps < " << props.agglomerateGap() << " x it; every "
             << interval_ << " coupling steps" << nl
             << "time,particles,pairContacts,wallContacts,pairFormed,"
             << "pairBroken,wallFormed,wallBroken,pairFormedPerUs,"
@@ -57,9 +63,10 @@ Foam::contactAnalysis::contactAnalysis
     }
 
     Info<< "Contact analysis: every " << interval_ << " coupling steps,"
-        << " touching below " << props.touchingGap() << " and agglomerate"
-        << " bonds below " << props.agglomerateGap() << " of the smaller"
-        << " radius (postProcessing/contactAnalysis)" << endl;
+        << " touching below " << props.touchingGap() << ", released at "
+        << props.releaseGap() << " and agglomerate bonds (besides"
+        << " contacts) below " << props.agglomerateGap() << " of the"
+        << " smaller radius (postProcessing/contactAnalysis)" << endl;
 }
 
 

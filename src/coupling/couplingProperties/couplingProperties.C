@@ -2,6 +2,7 @@
 #include "Time.H"
 #include "OSspecific.H"
 #include "keywordCheck.H"
+#include "Tuple2.H"
 
 const Foam::dictionary& Foam::couplingProperties::requiredSubDict
 (
@@ -77,6 +78,7 @@ Foam::couplingProperties::couplingProperties(const objectRegistry& obr)
     contactAnalysis_(false),
     contactInterval_(1),
     touchingGap_(0.01),
+    releaseGap_(0.01),
     agglomerateGap_(0.01),
     brownianTemperature_(0),
     brownianSeed_(0)
@@ -243,19 +245,37 @@ Foam::couplingProperties::couplingProperties(const objectRegistry& obr)
                 << contactInterval_ << "; allowed range: integer >= 1"
                 << " (coupling steps between analyses)" << exit(FatalIOError);
         }
-        for (const word key : {"touchingGap", "agglomerateGap"})
+        // the release and agglomerate gaps default to the touching gap
+        touchingGap_ = ca.getOrDefault<scalar>("touchingGap", 0.01);
+        releaseGap_ = ca.getOrDefault<scalar>("releaseGap", touchingGap_);
+        agglomerateGap_ =
+            ca.getOrDefault<scalar>("agglomerateGap", touchingGap_);
+        const Tuple2<word, scalar> gaps[] =
         {
-            const scalar gap = ca.getOrDefault<scalar>(key, 0.01);
-            if (!(gap >= 0 && gap < 1))
+            {"touchingGap", touchingGap_},
+            {"releaseGap", releaseGap_},
+            {"agglomerateGap", agglomerateGap_}
+        };
+        for (const Tuple2<word, scalar>& gap : gaps)
+        {
+            const bool release = gap.first() == "releaseGap";
+            const scalar lowest = release ? touchingGap_ : 0;
+            if (!(gap.second() >= lowest && gap.second() < 1))
             {
                 FatalIOErrorInFunction(ca)
-                    << "Keyword '" << key << "' in " << ca.name() << " is "
-                    << gap << "; allowed range: [0, 1) (a gap as a"
-                    << " fraction of the smaller radius)" << exit(FatalIOError);
+                    << "Keyword '" << gap.first() << "' in " << ca.name()
+                    << " is " << gap.second() << "; allowed range: ["
+                    << lowest << ", 1) (a gap as a fraction of the smaller"
+                    << " radius" << (release ? "; not below touchingGap" : "")
+                    << ")" << exit(FatalIOError);
             }
-            (key == "touchingGap" ? touchingGap_ : agglomerateGap_) = gap;
         }
-        keywordCheck(ca, {"interval", "touchingGap", "agglomerateGap"}, true);
+        keywordCheck
+        (
+            ca,
+            {"interval", "touchingGap", "releaseGap", "agglomerateGap"},
+            true
+        );
     }
 
     // Brownian motion: the DEM's drag update adds the random force

@@ -653,12 +653,16 @@ void Foam::demCoupling::analyseContacts(const scalarField& wallDist)
     }
     clockTime clock;
     const double* r = engine_().radius();
+    // 1: touching a wall; 2: within the release gap of one (a wall
+    // contact already formed lasts)
     labelList touchingWall(wallDist.size(), 0);
     forAll(touchingWall, i)
     {
         const scalar radius = demUnits::length*r[i];
         touchingWall[i] =
-            wallDist[i] <= (1 + props_.touchingGap())*radius ? 1 : 0;
+            wallDist[i] <= (1 + props_.touchingGap())*radius ? 1
+          : wallDist[i] <= (1 + props_.releaseGap())*radius ? 2
+          : 0;
     }
     contacts_->analyse(engine_(), mesh_.time().value(), touchingWall);
     analysedAt_ = mesh_.time().timeIndex();
@@ -1160,7 +1164,7 @@ Foam::demCoupling::demCoupling
         startDEM();
         clockTime clock;
         scalarField wallDist;
-        gatherRecords(contacts_.valid() ? props_.touchingGap() : 0, wallDist);
+        gatherRecords(contacts_.valid() ? props_.releaseGap() : 0, wallDist);
         if (!restart_.resume())
         {
             reportOutsideFluid();
@@ -1648,7 +1652,7 @@ void Foam::demCoupling::evolve()
         const bool analyse =
             contacts_.valid() && nCouplingSteps_ % contacts_->interval() == 0;
         scalarField wallDist;
-        gatherRecords(analyse ? props_.touchingGap() : 0, wallDist);
+        gatherRecords(analyse ? props_.releaseGap() : 0, wallDist);
         if (analyse)
         {
             analyseContacts(wallDist);
@@ -1720,7 +1724,7 @@ void Foam::demCoupling::write
         locateLocal
         (
             contacts_.valid()
-          ? max(touchTolerance_, props_.touchingGap()) : touchTolerance_,
+          ? max(touchTolerance_, props_.releaseGap()) : touchTolerance_,
             position, proc, cell, wallDist
         );
         const scalar analysisBefore = analysisSeconds_;

@@ -448,11 +448,12 @@ bool Foam::liggghtsEngine::hasGlobalProperty(const std::string& name) const
 void* Foam::liggghtsEngine::newContactAnalysis
 (
     double touchingGap,
+    double releaseGap,
     double agglomerateGap
 )
 {
     liggghtsCall call;
-    return colloidContactAnalysisNew(lmp_, touchingGap, agglomerateGap);
+    return colloidContactAnalysisNew(lmp_, touchingGap, releaseGap, agglomerateGap);
 }
 
 

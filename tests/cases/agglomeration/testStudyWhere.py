@@ -21,6 +21,10 @@ marked agglomerated as the run's analysis would:
      below 1 % of the smaller radius, 1.5 nm: not touching), neither
      marked agglomerated
 
+Then, with a release gap of 2.5 % (a contact lasts to 3.75 nm), a later
+write of D, F and G, a pair 2.5 nm apart marked as an agglomerate of 2:
+G one agglomerate and not a pair held apart, D still two.
+
 Expected (by construction): 6 agglomerates with these members, centres
 (to 1e-12 m) and parts of the die; three pairs within 50 nm not
 touching (F, 2 nm apart, D's middle pair, 3 nm, and E's ends, 47 nm: the
@@ -42,6 +46,21 @@ def write_list(path, rows, fmt):
         for r in rows:
             f.write(fmt % r + "\n")
         f.write(")\n")
+
+
+def write_cloud(time_dir, parts, radius):
+    """The particle cloud of a write time: parts (id, x, y, z,
+    agglomerateSize) [m], radius R but those of the radius dict"""
+    cloud = os.path.join(time_dir, "lagrangian", "particles")
+    os.makedirs(cloud)
+    write_list(os.path.join(cloud, "positions"), [(p[1], p[2], p[3], 0) for p in parts],
+               "(%.15g %.15g %.15g) %d")
+    write_list(os.path.join(cloud, "origId"), [(p[0],) for p in parts], "%d")
+    write_list(os.path.join(cloud, "U"), [(0, 0, 0)]*len(parts), "(%g %g %g)")
+    write_list(os.path.join(cloud, "d"), [(2*radius.get(p[0], R),) for p in parts], "%.15g")
+    for name in ("nContacts", "touchingParticle", "touchingWall"):
+        write_list(os.path.join(cloud, name), [(0,)]*len(parts), "%d")
+    write_list(os.path.join(cloud, "agglomerateSize"), [(p[4],) for p in parts], "%d")
 
 
 def main():
@@ -70,16 +89,7 @@ def main():
              (15, 80*u, 5*u, 0.802*u, 4), (16, 80*u, 5*u, 1.103*u, 4),
              (17, 140*u, 3*u, 0.6*u, 1), (18, 140*u + 2.5*R + 2e-9, 3*u, 0.6*u, 1)]     # F
     radius = {18: 1.5*R}                      # E
-    cloud = os.path.join(work, "1e-05", "lagrangian", "particles")
-    os.makedirs(cloud)
-    write_list(os.path.join(cloud, "positions"), [(p[1], p[2], p[3], 0) for p in parts],
-               "(%.15g %.15g %.15g) %d")
-    write_list(os.path.join(cloud, "origId"), [(p[0],) for p in parts], "%d")
-    write_list(os.path.join(cloud, "U"), [(0, 0, 0)]*len(parts), "(%g %g %g)")
-    write_list(os.path.join(cloud, "d"), [(2*radius.get(p[0], R),) for p in parts], "%.15g")
-    for name in ("nContacts", "touchingParticle", "touchingWall"):
-        write_list(os.path.join(cloud, name), [(0,)]*len(parts), "%d")
-    write_list(os.path.join(cloud, "agglomerateSize"), [(p[4],) for p in parts], "%d")
+    write_cloud(os.path.join(work, "1e-05"), parts, radius)
 
     t, found = studyReport.agglomerates(work)
     expected = [([1, 2], (-10*u, 1*u, (0.1*u + span - 0.2*u - span)/2 % span),
@@ -127,6 +137,26 @@ def main():
     good = good and studyReport.close_pair_series(work)[1] == [[0, 0, 0, 1]]
     print("close pairs kept in %s, reused, counted again for another touching gap: %s"
           % (os.path.relpath(kept, work), "ok" if good else "FAIL"))
+    ok = ok and good
+
+    # a contact held by the release gap (touching below 1 %, released at
+    # 2.5 % of R = 3.75 nm): a later write with D and F as above and G, a
+    # pair 2.5 nm apart, both marked in an agglomerate of 2 (a contact that
+    # formed and is held). G is one agglomerate and not a pair held apart;
+    # D's pairs, 3 nm apart but each already an agglomerate of 2, stay two
+    # agglomerates and a pair held apart, as does F.
+    with open(os.path.join(work, "constant", "couplingProperties"), "w") as f:
+        f.write("contactAnalysis\n{\n    touchingGap 0.01;\n    releaseGap 0.025;\n}\n")
+    later = [p for p in parts if p[0] in (9, 10, 11, 12, 17, 18)]
+    later += [(19, 60*u, 0.5*u, 0.3*u, 2), (20, 60*u + 2*R + 2.5e-9, 0.5*u, 0.3*u, 2)]   # G
+    write_cloud(os.path.join(work, "2e-05"), later, radius)
+    t, found = studyReport.agglomerates(work)
+    counts, closest = studyReport.close_pairs(work, os.path.join(work, "2e-05"))
+    good = abs(t - 2e-5) < 1e-15 and sorted(f[0] for f in found) == [[9, 10], [11, 12], [19, 20]] \
+        and counts == [2, 2, 2, 2] and abs(closest - 2e-9) < 1e-15
+    print("release gap 2.5 %%: agglomerates %s (expected [9, 10], [11, 12], [19, 20]); pairs not "
+          "touching within 5, 10, 20, 50 nm: %s, closest %.4g nm (expected [2, 2, 2, 2], 2 nm): %s"
+          % (sorted(f[0] for f in found), counts, closest*1e9, "ok" if good else "FAIL"))
     ok = ok and good
     print("PASS" if ok else "FAIL")
     return 0 if ok else 1

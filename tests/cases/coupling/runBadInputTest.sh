@@ -9,6 +9,7 @@
 #             misspeltKeyword misspeltTopKeyword diameterMismatch lostParticle
 #             particleOutsideBox coincidentParticles purgeWrite
 #             feedUnknownPatch feedSolidsFraction feedInterval feedNoInflow
+#             releaseBelowTouching
 set -e
 export PYTHONDONTWRITEBYTECODE=1   # no __pycache__ in the source tree
 variant=$1
@@ -107,6 +108,10 @@ case $variant in
         printf 'thermo_modify lost ignore\nvelocity all set 1e4 0 0\n' >> constant/DEM/in.liggghts
         filesAllowed=yes
         expect="1 particles were lost by the DEM .*allowLostParticles yes" ;;
+    releaseBelowTouching)
+        # a contact that would end before it forms
+        printf 'contactAnalysis\n{\n    touchingGap 0.02;\n    releaseGap 0.01;\n}\n' >> $props
+        expect="Keyword 'releaseGap' in .*couplingProperties.contactAnalysis\"? is 0.01; allowed range: \[0.02, 1\) \(a gap as a fraction of the smaller radius; not below touchingGap\)" ;;
     resumeIncomplete)
         # a later time folder without the DEM state (as one killed while
         # it was written) and startFrom latestTime: not resumed from
