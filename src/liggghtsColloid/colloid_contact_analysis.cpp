@@ -24,6 +24,7 @@
 #include "input.h"
 #include "modify.h"
 #include "neigh_list.h"
+#include "neighbor.h"
 #include "pair.h"
 
 using namespace LAMMPS_NS;
@@ -140,7 +141,8 @@ ColloidContactAnalysis::ColloidContactAnalysis(LAMMPS *lmp, const Settings &sett
 {
     if (!(settings.touchingGap >= 0) || !(settings.agglomerateGap >= 0))
         error->all(FLERR, "colloid contact analysis: the touching and agglomerate gaps must be >= 0");
-    if (!(settings.releaseGap >= settings.touchingGap))
+    if (settings_.releaseGap < 0) settings_.releaseGap = settings_.touchingGap;
+    if (!(settings_.releaseGap >= settings_.touchingGap))
         error->all(FLERR, "colloid contact analysis: the release gap must be >= the touching gap");
     if (modify->find_fix(labelFix) < 0)
     {
@@ -151,6 +153,26 @@ ColloidContactAnalysis::ColloidContactAnalysis(LAMMPS *lmp, const Settings &sett
     }
     labels_ = static_cast<FixPropertyAtom *>(
         modify->find_fix_property(labelFix, "property/atom", "scalar", 0, 0, "colloid contact analysis"));
+    checkReach();   // the particles there are; each analysis checks again
+}
+
+/* ---------------------------------------------------------------------- */
+
+// A pair within the gaps looked at must be in the neighbour list whatever
+// the atoms moved since it was built (up to half the skin); collective
+void ColloidContactAnalysis::checkReach() const
+{
+    double rMax = 0, rMaxAll = 0;
+    for (int i = 0; i < atom->nlocal; i++) rMax = std::max(rMax, atom->radius[i]);
+    MPI_Allreduce(&rMax, &rMaxAll, 1, MPI_DOUBLE, MPI_MAX, world);
+    const double gap = std::max(settings_.releaseGap, settings_.agglomerateGap);
+    if (gap*rMaxAll <= 0.5*neighbor->skin) return;
+    char msg[512];
+    snprintf(msg, sizeof(msg), "colloid contact analysis: the release or agglomerate gap "
+             "(%g of the largest radius %g: %g) exceeds half the neighbour skin (%g): "
+             "lower the gap or raise the skin ('neighbor' in the DEM script)",
+             gap, rMaxAll, gap*rMaxAll, 0.5*neighbor->skin);
+    error->all(FLERR, msg);
 }
 
 /* ---------------------------------------------------------------------- */
@@ -235,6 +257,8 @@ ColloidContactAnalysis::Result ColloidContactAnalysis::analyse(double t, const i
     double **x = atom->x;
     const double *r = atom->radius;
     const int *tag = atom->tag;
+
+    checkReach();
 
     // every pair within the release gap: one touching is a contact; one
     // between the touching and the release gap is if it was at the last

@@ -26,7 +26,9 @@
    Parallel: pairs come from the pair style's neighbour list (newton off:
    a pair with a ghost is seen by both ranks and counted once, by the atom
    with the smaller id); contact histories live on the rank a hash of the
-   pair assigns, so they survive atoms moving between ranks (and, saved
+   pair assigns, and decide whether a pair between the touching and the
+   release gap is a contact (both ranks of a pair with a ghost ask), so
+   they survive atoms moving between ranks (and, saved
    with a restart, a resumed run of as many ranks); clusters by
    propagating the smallest id over bonds, with the ghosts' values
    forwarded (periodic images included) until no rank changes one. No
@@ -50,7 +52,7 @@ public:
     struct Settings
     {
         double touchingGap = 0.01;      // of the smaller radius
-        double releaseGap = 0.01;       // of it; >= touchingGap
+        double releaseGap = -1;         // of it; >= touchingGap (< 0: touchingGap)
         double agglomerateGap = 0.01;   // of the smaller radius
     };
 
@@ -75,7 +77,10 @@ public:
     // 1 touching a wall, 2 within the release gap of one (a contact
     // already formed lasts), 0 neither; or NULL (no wall contacts). Needs
     // a pair style with a neighbour list that is valid for the current
-    // positions (between runs) and reaches the release gap.
+    // positions (between runs) and reaches the release gap: the largest
+    // gap the analysis looks at (release or agglomerate gap times the
+    // largest radius) must be within half the neighbour skin, else it
+    // stops with an error (the constructor checks the atoms there are).
     Result analyse(double t, const int *touchingWall);
 
     // Per local atom, from the last analysis: pair contacts, agglomerate
@@ -112,6 +117,7 @@ private:
     // bonds (i local, j local or ghost) of the cluster search
     std::vector<std::pair<int, int>> bonds_;
 
+    void checkReach() const;
     int owner(uint64_t key) const;
     std::vector<uint64_t> sendToOwners(const std::vector<uint64_t> &records, int width,
                                        std::vector<int> *from = NULL) const;

@@ -36,7 +36,7 @@ foreach(variant missingKeyword negativeDiameter negativeDensity unknownDragModel
                 diameterMismatch lostParticle particleOutsideBox
                 coincidentParticles purgeWrite
                 feedUnknownPatch feedSolidsFraction feedInterval feedNoInflow
-                releaseBelowTouching)
+                releaseBelowTouching releaseBeyondSkin)
     add_test(NAME case.coupling.badInput.${variant}
         COMMAND ${couplingDir}/runBadInputTest.sh ${variant} ${couplingWork}/badInput_${variant})
     set_tests_properties(case.coupling.badInput.${variant} PROPERTIES

@@ -46,7 +46,9 @@
     0.02 R. Three pair and three wall contacts formed and ended, each as
     long as its closed form within one interval; while held between 5 and
     10 nm, one contact each and one agglomerate of 2 (bonds only by
-    contacts).
+    contacts). Then the same across a periodic face, where each atom sees
+    the other's image (the pair counted once, both atoms' contacts from
+    the history).
 \*---------------------------------------------------------------------------*/
 #include "liggghtsRun.H"
 #include "colloid_contact_analysis.h"
@@ -255,12 +257,14 @@ TEST(contactAnalysis, durationAcrossRestart)
     for (double d : durations) EXPECT_NEAR(d, duration, interval);
 }
 
-// The gap of B from A of the wavering pair (waveringContact), um
+// The gap of B from A of the wavering pair (waveringContact), um; the
+// box periodic in x of length 10
 double gapOf(const LiggghtsRun& run)
 {
     const double* a = run.x(1);
     const double* b = run.x(2);
-    return std::sqrt(std::pow(b[0] - a[0], 2) + std::pow(b[1] - a[1], 2) + std::pow(b[2] - a[2], 2)) - 2*R;
+    const double dx = b[0] - a[0] - 10.0*std::round((b[0] - a[0])/10.0);
+    return std::sqrt(dx*dx + std::pow(b[1] - a[1], 2) + std::pow(b[2] - a[2], 2)) - 2*R;
 }
 
 TEST(contactAnalysis, waveringContact)
@@ -280,15 +284,19 @@ TEST(contactAnalysis, waveringContact)
     const double interval = 1e-3;           // us: 10 steps of 1e-4
     const double f1 = std::asin(1.0/3)/(2*M_PI);
 
+    for (const bool acrossFace : {false, true})
     for (const double releaseGap : {0.01, 0.02})
     {
-        SCOPED_TRACE("releaseGap " + std::to_string(releaseGap));
+        SCOPED_TRACE("releaseGap " + std::to_string(releaseGap) + (acrossFace ? ", across the periodic face" : ""));
         const double end = releaseGap > 0.01 ? 7.0/12 : 0.5 - f1;   // phase
         const double duration = (end - f1)*period;
 
         LiggghtsRun run;
-        run.commands(LiggghtsRun::header(5.0) + materials());
-        createAtoms(run, {{0.0, 0.0, 0.0}, {2*R + g0, 0.0, 0.0}});
+        // across the face x = -5 = 5: each atom sees the other's image
+        const double xA = acrossFace ? 4.6 : 0.0;
+        const double xB = xA + 2*R + g0 - (acrossFace ? 10.0 : 0.0);
+        run.commands(LiggghtsRun::header(5.0, acrossFace ? "p f f" : "f f f") + materials());
+        createAtoms(run, {{xA, 0.0, 0.0}, {xB, 0.0, 0.0}});
         std::ostringstream wiggle;
         wiggle << "group mover id 2\nfix move mover move wiggle " << -amp << " 0 0 " << period;
         run.commands(wiggle.str());
@@ -328,8 +336,9 @@ TEST(contactAnalysis, waveringContact)
                 EXPECT_EQ(r.agglomerates, 1) << "t " << k*interval;
             }
         }
-        std::printf("release gap %.2f R: %zu contacts, durations %.6f .. %.6f us, closed form "
-                    "%.6f us; %ld analyses while held\n", releaseGap, durations.size(),
+        std::printf("release gap %.2f R%s: %zu contacts, durations %.6f .. %.6f us, closed form "
+                    "%.6f us; %ld analyses while held\n", releaseGap,
+                    acrossFace ? ", across the periodic face" : "", durations.size(),
                     durations.empty() ? 0.0 : durations.front(),
                     durations.empty() ? 0.0 : durations.back(), duration, heldChecked);
         if (releaseGap > 0.01) EXPECT_GT(heldChecked, 30);

@@ -94,11 +94,12 @@ def geometry(case):
 
 
 def agglomerate_gap(case):
-    """The analysis' bond gap over the smaller radius (couplingProperties
-    contactAnalysis/agglomerateGap; the coupling's default: touchingGap,
-    whose default is 0.01)"""
+    """The analysis' bond gap over the smaller radius: touching pairs and
+    those below contactAnalysis/agglomerateGap (couplingProperties; the
+    coupling's defaults: agglomerateGap = touchingGap = 0.01)"""
     d = foamDict.read(os.path.join(case, "constant", "couplingProperties")).get("contactAnalysis", {})
-    return float(d.get("agglomerateGap", d.get("touchingGap", 0.01)))
+    touching = float(d.get("touchingGap", 0.01))
+    return max(float(d.get("agglomerateGap", touching)), touching)
 
 
 def release_gap(case):
@@ -166,8 +167,10 @@ def group_agglomerated(case, cloud):
             if gap < bond*min(ra, rb):
                 join(a, b)
             elif gap < release*min(ra, rb):
-                held.append((a, b))
-    for a, b in held:
+                held.append((gap, a, b))
+    # the closest first, the likelier contact (the cloud holds each
+    # particle's agglomerate size, not its agglomerate)
+    for _, a, b in sorted(held):
         if find(a) != find(b) and count[find(a)] + count[find(b)] <= min(size[a], size[b]):
             join(a, b)
     return members, {k: find(k) for k in members}, bonds

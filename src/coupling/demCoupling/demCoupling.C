@@ -660,8 +660,8 @@ void Foam::demCoupling::analyseContacts(const scalarField& wallDist)
     {
         const scalar radius = demUnits::length*r[i];
         touchingWall[i] =
-            wallDist[i] <= (1 + props_.touchingGap())*radius ? 1
-          : wallDist[i] <= (1 + props_.releaseGap())*radius ? 2
+            wallDist[i] < (1 + props_.touchingGap())*radius ? 1
+          : wallDist[i] < (1 + props_.releaseGap())*radius ? 2
           : 0;
     }
     contacts_->analyse(engine_(), mesh_.time().value(), touchingWall);

@@ -9,7 +9,7 @@
 #             misspeltKeyword misspeltTopKeyword diameterMismatch lostParticle
 #             particleOutsideBox coincidentParticles purgeWrite
 #             feedUnknownPatch feedSolidsFraction feedInterval feedNoInflow
-#             releaseBelowTouching
+#             releaseBelowTouching releaseBeyondSkin
 set -e
 export PYTHONDONTWRITEBYTECODE=1   # no __pycache__ in the source tree
 variant=$1
@@ -112,6 +112,11 @@ case $variant in
         # a contact that would end before it forms
         printf 'contactAnalysis\n{\n    touchingGap 0.02;\n    releaseGap 0.01;\n}\n' >> $props
         expect="Keyword 'releaseGap' in .*couplingProperties.contactAnalysis\"? is 0.01; allowed range: \[0.02, 1\) \(a gap as a fraction of the smaller radius; not below touchingGap\)" ;;
+    releaseBeyondSkin)
+        # a held contact the neighbour list may no longer hold: 0.5 x 0.5 um
+        # against half the DEM script's skin of 0.1 um
+        printf 'contactAnalysis\n{\n    touchingGap 0.01;\n    releaseGap 0.5;\n}\n' >> $props
+        expect="the release or agglomerate gap \(0.5 of the largest radius 0.5: 0.25\) exceeds half the neighbour skin \(0.05\)" ;;
     resumeIncomplete)
         # a later time folder without the DEM state (as one killed while
         # it was written) and startFrom latestTime: not resumed from
