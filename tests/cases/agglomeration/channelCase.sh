@@ -3,6 +3,7 @@
 # spheres of d = 1 um).  Needs: here (this folder), work.
 #
 #   newChannelCase             a fresh copy in work, cd there
+#   runLength END INTERVAL     endTime END [s], a write every INTERVAL steps
 #   includeParticles FILE      the DEM script creates the particles of FILE
 #                              (create_atoms lines) instead of its own
 #   meshAndQuiescentFluid      mesh, U = 0
@@ -14,6 +15,12 @@ newChannelCase()
     mkdir -p "$(dirname "$work")"
     cp -r "$here/../coupling/case" "$work"
     cd "$work"
+}
+
+runLength()
+{
+    sed -i -e "s/^endTime .*/endTime $1;/" -e "s/^writeInterval .*/writeInterval $2;/" \
+        system/controlDict
 }
 
 includeParticles()

@@ -19,7 +19,7 @@ set -u
 
 source "$here/channelCase.sh"
 newChannelCase
-sed -i -e "s/^endTime .*/endTime 1.4e-06;/" -e "s/^writeInterval .*/writeInterval 70;/" system/controlDict
+runLength 1.4e-06 70
 sed -i 's/^value .*/value (0 0 0);/' constant/g
 cat >> constant/couplingProperties <<'DICT'
 

@@ -31,8 +31,7 @@ set -u
 
 source "$here/channelCase.sh"
 newChannelCase
-sed -i -e "s/^endTime .*/endTime 3e-05;/" -e "s/^writeInterval .*/writeInterval 500;/" \
-    system/controlDict
+runLength 3e-05 500
 sed -i 's/coeffs { n (2 1 1); }/coeffs { n (1 2 1); }/' system/decomposeParDict
 grep -q "n (1 2 1)" system/decomposeParDict
 python3 - <<'PYEOF'

@@ -21,8 +21,7 @@ set -u
 
 source "$here/channelCase.sh"
 newChannelCase
-sed -i -e "s/^endTime .*/endTime 3e-05;/" -e "s/^writeInterval .*/writeInterval 500;/" \
-    system/controlDict
+runLength 3e-05 500
 cat >> constant/couplingProperties <<'DICT'
 
 contactAnalysis
