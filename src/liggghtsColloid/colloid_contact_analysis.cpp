@@ -588,6 +588,11 @@ const long *colloidContactAgglomerateSize(void *analysis)
     return static_cast<Handle *>(analysis)->analysis.agglomerateSize().data();
 }
 
+const long *colloidContactAgglomerateId(void *analysis)
+{
+    return static_cast<Handle *>(analysis)->analysis.agglomerateId().data();
+}
+
 int colloidContactSaveHistories(void *analysis, const char *file)
 {
     return static_cast<Handle *>(analysis)->analysis.saveHistories(file);

@@ -53,6 +53,12 @@ int colloidContactAgglomerateSizes(void *analysis, const long **sizeCountPairs);
 __attribute__((visibility("default")))
 const long *colloidContactAgglomerateSize(void *analysis);
 
+// Per local atom: its agglomerate's id, the smallest atom id in it (its
+// own id in none): the same on every rank, so that a post-processor
+// groups the particles as the analysis did
+__attribute__((visibility("default")))
+const long *colloidContactAgglomerateId(void *analysis);
+
 // The contact histories (the start of each contact) of this rank, to and
 // from a file of its own, for a restart of as many ranks; load before the
 // first analysis. Each returns 0 or an errno value (load: ENOENT when

@@ -6,7 +6,8 @@ reconstructed), ASCII format, with the standard library only.
 A write time is named by its path <case>/<time>; read() returns the
 particles of all processor folders of that time, sorted by particle id:
 position, velocity [m/s], radius [m], id, nContacts, touchingParticle,
-touchingWall, agglomerateSize (1 where the run wrote none)."""
+touchingWall, agglomerateSize (1 where the run wrote none), agglomerateId
+(None where the run wrote none)."""
 import glob
 import os
 import re
@@ -89,10 +90,12 @@ def read(path):
         tp = list_values(os.path.join(d, "touchingParticle"), 1)
         tw = list_values(os.path.join(d, "touchingWall"), 1)
         ag = list_values(os.path.join(d, "agglomerateSize"), 1) or [[1]]*len(pos)
+        ai = list_values(os.path.join(d, "agglomerateId"), 1) or [[None]]*len(pos)
         for k in range(len(pos)):
             rows.append((int(ids[k][0]), pos[k][:3], vel[k], 0.5*dia[k][0],
-                         int(nc[k][0]), int(tp[k][0]), int(tw[k][0]), int(ag[k][0])))
+                         int(nc[k][0]), int(tp[k][0]), int(tw[k][0]), int(ag[k][0]),
+                         None if ai[k][0] is None else int(ai[k][0])))
     rows.sort(key=lambda row: row[0])
     keys = ["id", "position", "velocity", "radius", "nContacts",
-            "touchingParticle", "touchingWall", "agglomerateSize"]
+            "touchingParticle", "touchingWall", "agglomerateSize", "agglomerateId"]
     return {key: [row[j] for row in rows] for j, key in enumerate(keys)}

@@ -6,8 +6,9 @@ in one plot (results/contacts.png).  Where the agglomerates are at each
 case's last write (results/where.md: each agglomerate's particles by id,
 its centre, height above the substrate and part of the die; where.png:
 the centres on the die's outline): from the written particle cloud, the
-particles with agglomerateSize > 1 grouped as the run's analysis groups
-them (gap below contactAnalysis/agglomerateGap of the smaller radius, or
+particles with agglomerateSize > 1 grouped by their agglomerateId, as the
+run's analysis grouped them (in clouds written before the id, by the
+gaps: below contactAnalysis/agglomerateGap of the smaller radius, or
 below releaseGap, where a contact lasts: constant/couplingProperties;
 across the periodic span).
 
@@ -132,13 +133,18 @@ def periodic_offset(cloud, span, a, b):
 def group_agglomerated(case, cloud):
     """The particles of a cloud with agglomerateSize > 1 joined as the
     run's analysis joined them: (members, their group's root by member,
-    bonds by member).  Bonded: below the bond gap; or within the release
-    gap, where a contact once formed lasts, if the particles' agglomerate
-    sizes allow it (two agglomerates that near each other without a
-    contact stay apart)"""
+    bonds by member).  From the cloud's agglomerateId where the run wrote
+    it (bonds: the pairs of an agglomerate within the release gap, which
+    hold every contact and bond of it); in older runs' clouds, bonded:
+    below the bond gap; or within the release gap, where a contact once
+    formed lasts, if the particles' agglomerate sizes allow it (two
+    agglomerates that near each other without a contact stay apart; the
+    closest pair first, so the grouping can differ from the run's)"""
     span = geometry(case)["span"]
     size = cloud["agglomerateSize"]
     members = [k for k, n in enumerate(size) if n > 1]
+    ids = cloud.get("agglomerateId")
+    by_id = ids is not None and all(ids[k] is not None for k in members)
     root = {k: k for k in members}
     count = {k: 1 for k in members}
     bonds = {k: [] for k in members}
@@ -161,13 +167,18 @@ def group_agglomerated(case, cloud):
     held = []
     for i, a in enumerate(members):
         for b in members[i + 1:]:
+            if by_id and ids[a] != ids[b]:
+                continue
             d = periodic_offset(cloud, span, a, b)
             ra, rb = cloud["radius"][a], cloud["radius"][b]
             gap = sum(x*x for x in d)**0.5 - ra - rb
-            if gap < bond*min(ra, rb):
+            if gap < (release if by_id else bond)*min(ra, rb):
                 join(a, b)
             elif gap < release*min(ra, rb):
                 held.append((gap, a, b))
+    if by_id:
+        first = {}
+        return members, {k: first.setdefault(ids[k], k) for k in members}, bonds
     # the closest first, the likelier contact (the cloud holds each
     # particle's agglomerate size, not its agglomerate)
     for _, a, b in sorted(held):

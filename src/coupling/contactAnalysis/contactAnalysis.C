@@ -187,13 +187,28 @@ void Foam::contactAnalysis::loadHistories(const fileName& file, const scalar t)
 }
 
 
+namespace
+{
+    // The plugin's per-atom values (long) as OpenFOAM labels
+    Foam::labelList labels(const long* values, const Foam::label n)
+    {
+        Foam::labelList out(n);
+        forAll(out, i)
+        {
+            out[i] = Foam::label(values[i]);
+        }
+        return out;
+    }
+}
+
+
 Foam::labelList Foam::contactAnalysis::agglomerateSize(const label nLocal) const
 {
-    const long* s = colloidContactAgglomerateSize(handle_);
-    labelList size(nLocal, 1);
-    forAll(size, i)
-    {
-        size[i] = label(s[i]);
-    }
-    return size;
+    return labels(colloidContactAgglomerateSize(handle_), nLocal);
+}
+
+
+Foam::labelList Foam::contactAnalysis::agglomerateId(const label nLocal) const
+{
+    return labels(colloidContactAgglomerateId(handle_), nLocal);
 }

@@ -1763,6 +1763,8 @@ void Foam::demCoupling::write
             out.touchingWall[i] =
                 (wallDist[i] <= (1 + touchTolerance_)*radius) ? 1 : 0;
         }
+        out.agglomerateId =
+            contacts_.valid() ? contacts_->agglomerateId(n) : out.id;
 
         const label nPresent = returnReduce(label(n), sumOp<label>());
         bool cloudWritten = true;

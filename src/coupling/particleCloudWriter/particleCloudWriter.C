@@ -65,17 +65,18 @@ Foam::label Foam::particleCloudWriter::write
 
     // The particles of this rank's cells
     DynamicList<label> cell, id, nContacts, touchingWall, agglomerateSize;
+    DynamicList<label> agglomerateId;
     DynamicList<point> position;
     DynamicList<vector> velocity;
     DynamicList<scalar> diameter;
 
     auto receive = [&](Istream& is)
     {
-        labelList c, i, nc, tw, as;
+        labelList c, i, nc, tw, as, ai;
         pointField x;
         vectorField v;
         scalarField d;
-        is >> c >> i >> x >> v >> d >> nc >> tw >> as;
+        is >> c >> i >> x >> v >> d >> nc >> tw >> as >> ai;
         append(cell, c);
         append(id, i);
         append(position, x);
@@ -84,6 +85,7 @@ Foam::label Foam::particleCloudWriter::write
         append(nContacts, nc);
         append(touchingWall, tw);
         append(agglomerateSize, as);
+        append(agglomerateId, ai);
     };
 
     if (!Pstream::parRun())
@@ -97,6 +99,7 @@ Foam::label Foam::particleCloudWriter::write
         append(nContacts, listPick(local.nContacts, idx));
         append(touchingWall, listPick(local.touchingWall, idx));
         append(agglomerateSize, listPick(local.agglomerateSize, idx));
+        append(agglomerateId, listPick(local.agglomerateId, idx));
     }
     else
     {
@@ -112,7 +115,8 @@ Foam::label Foam::particleCloudWriter::write
                     << listPick(local.diameter, idx)
                     << listPick(local.nContacts, idx)
                     << listPick(local.touchingWall, idx)
-                    << listPick(local.agglomerateSize, idx);
+                    << listPick(local.agglomerateSize, idx)
+                    << listPick(local.agglomerateId, idx);
             }
         }
         labelList sizes;
@@ -166,6 +170,7 @@ Foam::label Foam::particleCloudWriter::write
              && writeField<label>(cloud, "touchingParticle", touchingParticle)
              && writeField<label>(cloud, "touchingWall", touchingWall)
              && writeField<label>(cloud, "agglomerateSize", agglomerateSize)
+             && writeField<label>(cloud, "agglomerateId", agglomerateId)
              && writeContactCellFields
                 (
                     mesh, cell, nContacts, touchingWall, agglomerateSize,

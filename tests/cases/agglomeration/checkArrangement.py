@@ -1,8 +1,8 @@
 #!/usr/bin/env python3
 """Checks the first analysis of runArrangementTest.sh (the start) against
 the arrangement's contacts and clusters, known by construction
-(writeArrangement.py), each particle's agglomerateSize in the time-0
-cloud, and the time-0 cell fields (contactCellFields.H): in every cell of
+(writeArrangement.py), each particle's agglomerateSize and agglomerateId
+in the time-0 cloud, and the time-0 cell fields (contactCellFields.H): in every cell of
 every rank, density x cell volume = the particles, pair contacts (half
 per particle), wall contacts and agglomerated particles that the
 arrangement puts in the cell (by the cloud's cell of each particle;
@@ -105,16 +105,22 @@ def main():
             sizes[int(row["size"])] = int(row["count"])
     check("agglomerate sizes at the start", sizes, {2: 3, 3: 1, 5: 1, 6: 1})
 
-    # the cloud at time 0: each particle's agglomerate size (ids follow
-    # the creation order of the groups)
+    # the cloud at time 0: each particle's agglomerate size and id, the
+    # smallest id in its agglomerate, its own in none (ids follow the
+    # creation order of the groups, from 1)
     cloud = particleCloud.read(os.path.join(case, "0"))
-    want = []
+    want, wantId = [], []
     for name, centres in GROUPS:
+        first = len(want) + 1
         want += [SIZE[name]]*len(centres)
+        wantId += [first if SIZE[name] > 1 else first + k for k in range(len(centres))]
     got = dict(zip(cloud["id"], cloud["agglomerateSize"]))
     check("particles in the cloud", len(got), len(want))
     wrong = [i for i in range(1, len(want) + 1) if got.get(i) != want[i - 1]]
     check("particles with a wrong agglomerateSize", wrong, [])
+    gotId = dict(zip(cloud["id"], cloud["agglomerateId"]))
+    wrong = [i for i in range(1, len(wantId) + 1) if gotId.get(i) != wantId[i - 1]]
+    check("particles with a wrong agglomerateId", wrong, [])
     checkCellFields(case, check)
 
     print("PASS" if ok else "FAIL")

@@ -23,7 +23,12 @@ marked agglomerated as the run's analysis would:
 
 Then, with a release gap of 2.5 % (a contact lasts to 3.75 nm), a later
 write of D, F and G, a pair 2.5 nm apart marked as an agglomerate of 2:
-G one agglomerate and not a pair held apart, D still two.
+G one agglomerate and not a pair held apart, D still two.  And a third
+write with the run's agglomerateId: H, four particles in a row 2.7, 2.5
+and 2.8 nm apart (all within the release gap), marked as two agglomerates
+of 2, the first two and the last two: two agglomerates, and the middle
+pair held apart (grouped by the gaps alone, the closest pair, the middle
+one, would be taken as the contact).
 
 Expected (by construction): 6 agglomerates with these members, centres
 (to 1e-12 m) and parts of the die; three pairs within 50 nm not
@@ -50,7 +55,8 @@ def write_list(path, rows, fmt):
 
 def write_cloud(time_dir, parts, radius):
     """The particle cloud of a write time: parts (id, x, y, z,
-    agglomerateSize) [m], radius R but those of the radius dict"""
+    agglomerateSize[, agglomerateId]) [m], radius R but those of the
+    radius dict"""
     cloud = os.path.join(time_dir, "lagrangian", "particles")
     os.makedirs(cloud)
     write_list(os.path.join(cloud, "positions"), [(p[1], p[2], p[3], 0) for p in parts],
@@ -61,6 +67,8 @@ def write_cloud(time_dir, parts, radius):
     for name in ("nContacts", "touchingParticle", "touchingWall"):
         write_list(os.path.join(cloud, name), [(0,)]*len(parts), "%d")
     write_list(os.path.join(cloud, "agglomerateSize"), [(p[4],) for p in parts], "%d")
+    if all(len(p) > 5 for p in parts):
+        write_list(os.path.join(cloud, "agglomerateId"), [(p[5],) for p in parts], "%d")
 
 
 def main():
@@ -156,6 +164,23 @@ def main():
         and counts == [2, 2, 2, 2] and abs(closest - 2e-9) < 1e-15
     print("release gap 2.5 %%: agglomerates %s (expected [9, 10], [11, 12], [19, 20]); pairs not "
           "touching within 5, 10, 20, 50 nm: %s, closest %.4g nm (expected [2, 2, 2, 2], 2 nm): %s"
+          % (sorted(f[0] for f in found), counts, closest*1e9, "ok" if good else "FAIL"))
+    ok = ok and good
+
+    # the run's agglomerateId: H, 21-22 2.7 nm, 22-23 2.5 nm, 23-24 2.8 nm
+    # apart, agglomerates (21, 22) and (23, 24)
+    x = [70*u]
+    for gap in (2.7e-9, 2.5e-9, 2.8e-9):
+        x.append(x[-1] + 2*R + gap)
+    write_cloud(os.path.join(work, "3e-05"),
+                [(21 + k, x[k], 0.5*u, 0.3*u, 2, 21 if k < 2 else 23) for k in range(4)], {})
+    t, found = studyReport.agglomerates(work)
+    counts, closest = studyReport.close_pairs(work, os.path.join(work, "3e-05"))
+    good = abs(t - 3e-5) < 1e-15 and sorted(f[0] for f in found) == [[21, 22], [23, 24]] \
+        and all(abs(f[1][0] - (x[f[0][0] - 21] + x[f[0][1] - 21])/2) < 1e-12 for f in found) \
+        and counts == [1, 1, 1, 1] and abs(closest - 2.5e-9) < 1e-15
+    print("agglomerateId: agglomerates %s (expected [21, 22], [23, 24]); pairs not touching "
+          "within 5, 10, 20, 50 nm: %s, closest %.4g nm (expected [1, 1, 1, 1], 2.5 nm): %s"
           % (sorted(f[0] for f in found), counts, closest*1e9, "ok" if good else "FAIL"))
     ok = ok and good
     print("PASS" if ok else "FAIL")
