@@ -164,21 +164,23 @@ def group_agglomerated(case, cloud):
         bonds[b].append(a)
 
     bond, release = agglomerate_gap(case), release_gap(case)
+    # the pairs to look at: of one agglomerate (by id), or all
+    sets = {}
+    for k in members:
+        sets.setdefault(ids[k] if by_id else 0, []).append(k)
     held = []
-    for i, a in enumerate(members):
-        for b in members[i + 1:]:
-            if by_id and ids[a] != ids[b]:
-                continue
-            d = periodic_offset(cloud, span, a, b)
-            ra, rb = cloud["radius"][a], cloud["radius"][b]
-            gap = sum(x*x for x in d)**0.5 - ra - rb
-            if gap < (release if by_id else bond)*min(ra, rb):
-                join(a, b)
-            elif gap < release*min(ra, rb):
-                held.append((gap, a, b))
+    for ks in sets.values():
+        for i, a in enumerate(ks):
+            for b in ks[i + 1:]:
+                d = periodic_offset(cloud, span, a, b)
+                ra, rb = cloud["radius"][a], cloud["radius"][b]
+                gap = sum(x*x for x in d)**0.5 - ra - rb
+                if gap < (release if by_id else bond)*min(ra, rb):
+                    join(a, b)
+                elif gap < release*min(ra, rb):
+                    held.append((gap, a, b))
     if by_id:
-        first = {}
-        return members, {k: first.setdefault(ids[k], k) for k in members}, bonds
+        return members, {k: sets[ids[k]][0] for k in members}, bonds
     # the closest first, the likelier contact (the cloud holds each
     # particle's agglomerate size, not its agglomerate)
     for _, a, b in sorted(held):
@@ -189,7 +191,8 @@ def group_agglomerated(case, cloud):
 
 def agglomerates(case):
     """(write time [s], [(ids, centre [m], die part)]) at the case's last
-    write: the particles with agglomerateSize > 1 joined where they touch"""
+    write: the particles with agglomerateSize > 1 grouped as the run's
+    analysis grouped them (group_agglomerated)"""
     g = geometry(case)
     last = particleCloud.latest(case)
     cloud = particleCloud.read(last)
@@ -215,6 +218,11 @@ def agglomerates(case):
                     d = offset(b, a)
                     rel[b] = [rel[a][j] + d[j] for j in range(3)]
                     todo.append(b)
+        # a member no bond reaches (its link is a particle outside the
+        # fluid mesh, which the cloud does not hold): the nearest image
+        for b in ks:
+            if b not in rel:
+                rel[b] = offset(b, first)
         c = [cloud["position"][first][j] + sum(r[j] for r in rel.values())/len(ks)
              for j in range(3)]
         c[2] %= g["span"]       # back into the span (the DEM's z from 0)

@@ -14,7 +14,7 @@
 # Expected at the start (checkArrangement.py): 14 particle and 1 wall
 # contact; 4, 8 and 10 particles with 0, 1 and 2 contacts; agglomerates of
 # sizes 2 (x3), 3, 5 and 6, 20 particles in them; in the time-0 cloud each
-# particle's agglomerateSize; the time-0 cell fields (densities of
+# particle's agglomerateSize and agglomerateId; the time-0 cell fields (densities of
 # particles, contacts and agglomerated particles) cell by cell.
 #
 # usage: runArrangementTest.sh serial|parallel workDir

@@ -28,7 +28,9 @@ write with the run's agglomerateId: H, four particles in a row 2.7, 2.5
 and 2.8 nm apart (all within the release gap), marked as two agglomerates
 of 2, the first two and the last two: two agglomerates, and the middle
 pair held apart (grouped by the gaps alone, the closest pair, the middle
-one, would be taken as the contact).
+one, would be taken as the contact); and I, the two ends of a chain of
+three whose middle particle the cloud does not hold (outside the fluid
+mesh): one agglomerate, centred between the two.
 
 Expected (by construction): 6 agglomerates with these members, centres
 (to 1e-12 m) and parts of the die; three pairs within 50 nm not
@@ -172,16 +174,23 @@ def main():
     x = [70*u]
     for gap in (2.7e-9, 2.5e-9, 2.8e-9):
         x.append(x[-1] + 2*R + gap)
+    # I: 25 and 27 of an agglomerate of three, 26 between them not written
+    x += [80*u, 80*u + 4*R]
     write_cloud(os.path.join(work, "3e-05"),
-                [(21 + k, x[k], 0.5*u, 0.3*u, 2, 21 if k < 2 else 23) for k in range(4)], {})
+                [(21 + k, x[k], 0.5*u, 0.3*u, 2, 21 if k < 2 else 23) for k in range(4)]
+                + [(25, x[4], 0.5*u, 0.3*u, 3, 25), (27, x[5], 0.5*u, 0.3*u, 3, 25)], {})
     t, found = studyReport.agglomerates(work)
     counts, closest = studyReport.close_pairs(work, os.path.join(work, "3e-05"))
-    good = abs(t - 3e-5) < 1e-15 and sorted(f[0] for f in found) == [[21, 22], [23, 24]] \
-        and all(abs(f[1][0] - (x[f[0][0] - 21] + x[f[0][1] - 21])/2) < 1e-12 for f in found) \
+    centre = {21: (x[0] + x[1])/2, 23: (x[2] + x[3])/2, 25: 80*u + 2*R}
+    good = abs(t - 3e-5) < 1e-15 \
+        and sorted(f[0] for f in found) == [[21, 22], [23, 24], [25, 27]] \
+        and all(abs(f[1][0] - centre[f[0][0]]) < 1e-12 for f in found) \
         and counts == [1, 1, 1, 1] and abs(closest - 2.5e-9) < 1e-15
-    print("agglomerateId: agglomerates %s (expected [21, 22], [23, 24]); pairs not touching "
-          "within 5, 10, 20, 50 nm: %s, closest %.4g nm (expected [1, 1, 1, 1], 2.5 nm): %s"
-          % (sorted(f[0] for f in found), counts, closest*1e9, "ok" if good else "FAIL"))
+    print("agglomerateId: agglomerates %s (expected [21, 22], [23, 24], [25, 27] centred at "
+          "x %s um); pairs not touching within 5, 10, 20, 50 nm: %s, closest %.4g nm "
+          "(expected [1, 1, 1, 1], 2.5 nm): %s"
+          % (sorted(f[0] for f in found), sorted("%.6g" % (c*1e6) for c in centre.values()),
+             counts, closest*1e9, "ok" if good else "FAIL"))
     ok = ok and good
     print("PASS" if ok else "FAIL")
     return 0 if ok else 1
