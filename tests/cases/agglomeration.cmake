@@ -67,14 +67,19 @@ set_tests_properties(case.agglomeration.periodicCrossing.parallel PROPERTIES PRO
 # touching gap (5 nm) to the release gap (10 nm), each as long as the
 # closed form within one analysis interval, both ranks counting the pair's
 # contact and agglomerate while held (runReleaseGapTest.sh,
-# checkReleaseGap.py).
+# checkReleaseGap.py).  releaseGapResumed: the same, stopped at 5 us, while
+# both contacts are held (gap 7 nm), and resumed from that write.
 foreach(mode serial parallel)
     add_test(NAME case.agglomeration.releaseGap.${mode}
         COMMAND ${agglomerationDir}/runReleaseGapTest.sh ${mode} ${agglomerationWork}/releaseGap_${mode})
-    set_tests_properties(case.agglomeration.releaseGap.${mode} PROPERTIES
-        TIMEOUT 120 LABELS "case;agglomeration" ENVIRONMENT PYTHONDONTWRITEBYTECODE=1)
+    add_test(NAME case.agglomeration.releaseGapResumed.${mode}
+        COMMAND ${agglomerationDir}/runReleaseGapTest.sh ${mode}
+                ${agglomerationWork}/releaseGapResumed_${mode} 5e-06)
+    set_tests_properties(case.agglomeration.releaseGap.${mode} case.agglomeration.releaseGapResumed.${mode}
+        PROPERTIES TIMEOUT 120 LABELS "case;agglomeration" ENVIRONMENT PYTHONDONTWRITEBYTECODE=1)
 endforeach()
-set_tests_properties(case.agglomeration.releaseGap.parallel PROPERTIES PROCESSORS 2)
+set_tests_properties(case.agglomeration.releaseGap.parallel case.agglomeration.releaseGapResumed.parallel
+    PROPERTIES PROCESSORS 2)
 
 # agglomeration.slotCoaterPeriodicFill: the slot coater's DEM box is
 # periodic in z, and its fill keeps fillMinimumGap between every two

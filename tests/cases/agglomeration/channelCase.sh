@@ -6,8 +6,13 @@
 #   runLength END INTERVAL     endTime END [s], a write every INTERVAL steps
 #   includeParticles FILE      the DEM script creates the particles of FILE
 #                              (create_atoms lines) instead of its own
+#   resumableBox               the DEM script reads the DEM state of a
+#                              resumed run (colloid_restart 1) instead of
+#                              creating the box
 #   meshAndQuiescentFluid      mesh, U = 0
-#   runChannelSolver MODE      serial | parallel (2 ranks; reconstructed)
+#   runChannelSolver MODE [resume]
+#                              serial | parallel (2 ranks; reconstructed);
+#                              resume: a parallel run already decomposed
 
 newChannelCase()
 {
@@ -30,6 +35,18 @@ includeParticles()
     grep -q "^include *$1" constant/DEM/in.liggghts
 }
 
+resumableBox()
+{
+    awk '/^(atom_style|boundary|region +domain|create_box) /{
+             $1 = $1; held = held sprintf("    \"%s\" &\n", $0)
+             if ($1 != "create_box") next
+             printf "if \"${colloid_restart} == 0\" then &\n%selse &\n", held
+             print "    \"read_restart ${colloid_restart_file}\""; next }
+         { print }' constant/DEM/in.liggghts > constant/DEM/in.liggghts.new
+    mv constant/DEM/in.liggghts.new constant/DEM/in.liggghts
+    grep -q 'read_restart ${colloid_restart_file}' constant/DEM/in.liggghts
+}
+
 meshAndQuiescentFluid()
 {
     blockMesh > log.blockMesh 2>&1
@@ -43,10 +60,10 @@ runChannelSolver()
     case $1 in
         serial) colloidDEMFoam > log.colloidDEMFoam 2>&1 || { tail -30 log.colloidDEMFoam; exit 1; } ;;
         parallel)
-            decomposePar > log.decomposePar 2>&1
+            [ "${2:-}" = resume ] || decomposePar > log.decomposePar 2>&1
             mpirun -np 2 colloidDEMFoam -parallel > log.colloidDEMFoam 2>&1 \
                 || { tail -30 log.colloidDEMFoam; exit 1; }
-            reconstructPar > log.reconstructPar 2>&1 ;;
+            reconstructPar -newTimes > log.reconstructPar 2>&1 ;;
         *) echo "usage: $0 serial|parallel workDir" 1>&2; exit 1 ;;
     esac
 }

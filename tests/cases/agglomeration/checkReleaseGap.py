@@ -8,14 +8,17 @@ wall contacts formed and ended, each lasting (7/12 - f1) P within one
 analysis interval (each end is seen up to one interval late); at every
 analysis inside the contact's window and with the gap above 5 nm (held by
 the release gap), 1 pair contact, 1 wall contact, 2 particles with one
-contact each and one agglomerate of 2.
+contact each and one agglomerate of 2.  A resumed run's folders are
+joined (src/python/contactAnalysis.py).
 
 usage: checkReleaseGap.py caseDir"""
-import csv
-import glob
 import math
 import os
 import sys
+
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)),
+                                "..", "..", "..", "src", "python"))
+import contactAnalysis  # noqa: E402
 
 P = 1e-5            # s
 INTERVAL = 2e-8     # s: one coupling step
@@ -28,19 +31,17 @@ def gap_nm(t):
 
 
 def main():
-    folder = glob.glob(os.path.join(sys.argv[1], "postProcessing", "contactAnalysis", "*"))[0]
-    rows = list(csv.DictReader(l for l in open(os.path.join(folder, "contacts.csv"))
-                               if not l.startswith("#")))
-    ended = list(csv.DictReader(open(os.path.join(folder, "contactDurations.csv"))))
+    data = contactAnalysis.read(sys.argv[1])
+    rows, ended = data["contacts"], data["durations"]
     ok = len(rows) > 1000
-    total = {k: sum(int(r[k]) for r in rows)
+    total = {k: int(sum(r[k] for r in rows))
              for k in ("pairFormed", "pairBroken", "wallFormed", "wallBroken")}
-    print("%d analyses to %s s; %s" % (len(rows), rows[-1]["time"], total))
+    print("%d analyses to %g s; %s" % (len(rows), rows[-1]["time"], total))
     ok = ok and all(v == 3 for v in total.values())
 
     expected = (END - F1)*P
     for kind in ("pair", "wall"):
-        d = [float(r["duration"]) for r in ended if r["kind"] == kind]
+        d = [r["duration"] for r in ended if r["kind"] == kind]
         print("%s contacts ended: %d, durations %s s, closed form %.6g s (released at the "
               "touching gap: %.6g s)" % (kind, len(d), ["%.6g" % x for x in d], expected,
                                          (0.5 - 2*F1)*P))
@@ -48,13 +49,13 @@ def main():
 
     held, bad = 0, []
     for r in rows:
-        t = float(r["time"])
+        t = r["time"]
         phase = math.fmod(t, P)/P
         if F1 + INTERVAL/P < phase < END - INTERVAL/P and gap_nm(t) >= 5:
             held += 1
             got = (r["pairContacts"], r["wallContacts"], r["with1"], r["agglomerates"],
                    r["largestAgglomerate"])
-            if got != ("1", "1", "2", "1", "2"):
+            if got != (1, 1, 2, 1, 2):
                 bad.append((r["time"], got))
     print("analyses held by the release gap: %d; rows other than 1 pair and 1 wall contact, "
           "2 particles with one, one agglomerate of 2: %s" % (held, bad[:5] or "none"))

@@ -18,12 +18,19 @@
 # closed form within one analysis interval; between, while the gap is
 # between 5 and 10 nm, one pair contact, A and B each with one (both
 # ranks know it), one agglomerate of 2.
+# With resumeAt (s): the run stops at that write and is resumed from it
+# to the end (colloidDEMFoam, startFrom latestTime; the DEM state and the
+# contact histories from the write; 'fix move' continues from its
+# restart).  At 5e-6 s both contacts are held (gap 7 nm, phase 1/2): the
+# same checks hold only if the resumed run keeps them as contacts with
+# their start times.
 #
-# usage: runReleaseGapTest.sh serial|parallel workDir
+# usage: runReleaseGapTest.sh serial|parallel workDir [resumeAt]
 set -e
 export PYTHONDONTWRITEBYTECODE=1   # no __pycache__ in the source tree
 mode=$1
 work=$2
+resumeAt=${3:-}
 here=$(cd "$(dirname "$0")" && pwd)
 set +u
 source "$here/../../../etc/bashrc"
@@ -31,7 +38,7 @@ set -u
 
 source "$here/channelCase.sh"
 newChannelCase
-runLength 3e-05 500
+runLength "${resumeAt:-3e-05}" 250
 cat >> constant/couplingProperties <<'DICT'
 
 contactAnalysis
@@ -41,11 +48,13 @@ contactAnalysis
     releaseGap      0.02;
 }
 DICT
-# the particles move as prescribed: no integration
+# the particles move as prescribed: no integration (a resumed run has them
+# from the restart, and the same 'fix move' ids continue their motion)
 cat > wavering.liggghts <<'DICT'
-create_atoms    1 single 49.5 50 25 units box
-create_atoms    1 single 50.507 50 25 units box
-create_atoms    1 single 20 0.507 25 units box
+if "${colloid_restart} == 0" then &
+    "create_atoms 1 single 49.5 50 25 units box" &
+    "create_atoms 1 single 50.507 50 25 units box" &
+    "create_atoms 1 single 20 0.507 25 units box"
 unfix           integrate
 group           still id 1
 group           pairMover id 2
@@ -56,7 +65,17 @@ fix             wallMover wallMover move wiggle 0 -0.006 0 10
 DICT
 sed -i 's/^processors .*//; s/^boundary .*/&\nprocessors      * 1 1/' constant/DEM/in.liggghts
 includeParticles wavering.liggghts
+resumableBox
 meshAndQuiescentFluid
 runChannelSolver "$mode"
+if [ -n "$resumeAt" ]
+then
+    mv log.colloidDEMFoam log.colloidDEMFoam.to"$resumeAt"
+    runLength 3e-05 250
+    sed -i 's/^startFrom .*/startFrom       latestTime;/' system/controlDict
+    runChannelSolver "$mode" resume
+    grep -m1 "^Contact analysis: contact histories of time $resumeAt s read back" log.colloidDEMFoam \
+        || { echo "FAIL: the resumed run did not read the contact histories of $resumeAt s back"; exit 1; }
+fi
 grep "^Contacts:" log.colloidDEMFoam | tail -1
 python3 "$here/checkReleaseGap.py" .
