@@ -1,9 +1,12 @@
 #!/bin/bash
 # The agglomeration study's driver (tutorials/slotCoater/Allstudy) on a copy
-# of the tutorial: one case (isoelectricBrownian) for two coupling steps at
-# the study's size, then the report.  Asserted: the case holds the study's
-# settings (span 5 um, zeta 0, DEM step 4e-10 s, 25 steps per coupling
-# step, Brownian motion on, a write every 5 us), an unknown case name
+# of the tutorial: one case (isoelectricBrownianSlowWeb) for two coupling
+# steps at the study's size, then the report.  Asserted: the case holds the
+# study's settings (span 5 um, zeta 0, DEM step 4e-10 s, 25 steps per
+# coupling step, Brownian motion on, a write every 5 us) and the flow
+# change's (web 0.1 m/s; the steady flow's inflow half the full speed's,
+# 0.1 m/s x 20 um wet film x 5 um span = 1e-11 m^3/s, within 1e-6), an
+# unknown case name
 # stops everything before a run, the run reaches its end
 # with the fill of the 5 um span (between 1.9e5 and 2.1e5 particles, 0.05
 # of the gap and the slot), a second set-up of the same case without
@@ -30,16 +33,16 @@ rm -rf study results
 fail() { echo "FAIL: $*"; exit 1; }
 
 # an unknown case stops before any run
-if ./Allstudy -endTime 2e-8 isoelectricBrownian noSuchCase > unknown.out 2>&1
+if ./Allstudy -endTime 2e-8 isoelectricBrownianSlowWeb noSuchCase > unknown.out 2>&1
 then
     fail "an unknown case was accepted"
 fi
 grep -q "unknown case 'noSuchCase'" unknown.out || { cat unknown.out; fail "message"; }
 [ ! -d study ] || fail "a case was set up before the unknown one was refused"
 
-./Allstudy -endTime 2e-8 isoelectricBrownian > allstudy.out 2>&1 \
-    || { cat allstudy.out; tail -20 study/isoelectricBrownian.log; fail "Allstudy"; }
-case=study/isoelectricBrownian
+./Allstudy -endTime 2e-8 isoelectricBrownianSlowWeb > allstudy.out 2>&1 \
+    || { cat allstudy.out; tail -20 study/isoelectricBrownianSlowWeb.log; fail "Allstudy"; }
+case=study/isoelectricBrownianSlowWeb
 value() { awk -v k="$2" '$1 == k { sub(";", "", $2); print $2; exit }' "$1"; }
 [ "$(value $case/system/slotCoaterParameters span)" = 5e-6 ] || fail "span"
 [ "$(value $case/system/slotCoaterParameters zetaPotential)" = 0 ] || fail "zetaPotential"
@@ -47,25 +50,30 @@ value() { awk -v k="$2" '$1 == k { sub(";", "", $2); print $2; exit }' "$1"; }
 [ "$(value $case/constant/couplingProperties couplingInterval)" = 25 ] || fail "couplingInterval"
 [ "$(value $case/system/controlDict writeInterval)" = 500 ] || fail "writeInterval"
 grep -q "^Brownian motion: 293.15 K, seed 1" $case/log.colloidDEMFoam || fail "no Brownian motion"
+[ "$(value $case/system/slotCoaterParameters webSpeed)" = 0.1 ] || fail "webSpeed"
+inflow=$(sed -n 's/^Steady flow converged .*(inflow \([^ ]*\) m^3\/s.*/\1/p' $case.log)
+echo "steady flow's inflow: $inflow m^3/s"
+awk -v q="$inflow" 'BEGIN { exit !(q != "" && (q < 0 ? -q : q) > 1e-11*(1 - 1e-6) && (q < 0 ? -q : q) < 1e-11*(1 + 1e-6)) }' \
+    || fail "inflow '$inflow', not 1e-11 m^3/s"
 grep -q "^variable zetaPotential equal 0$" $case/DEM/slotCoater.liggghts || fail "zeta not written for the DEM"
 [ -f $case/2e-08/uniform/colloidCoupling ] || fail "the run did not reach 2e-08"
 n=$(awk '/^Particles: present/ { sub(",", "", $3); print $3 }' $case/log.colloidDEMFoam | tail -1)
 echo "particles present at the end: $n"
 awk -v n="$n" 'BEGIN { exit !(n >= 1.9e5 && n <= 2.1e5) }' || fail "$n particles, not the 5 um span's 2.0e5"
 
-if ./Allstudy -endTime 2e-8 isoelectricBrownian > again.out 2>&1
+if ./Allstudy -endTime 2e-8 isoelectricBrownianSlowWeb > again.out 2>&1
 then
     fail "a second set-up of the case did not stop"
 fi
-grep -q "study/isoelectricBrownian exists: add -resume" again.out || { cat again.out; fail "message"; }
+grep -q "study/isoelectricBrownianSlowWeb exists: add -resume" again.out || { cat again.out; fail "message"; }
 
 ./Allstudy -report > report.out 2>&1 || { cat report.out; fail "report"; }
-grep -q "^| isoelectricBrownian | 0.02 |" results/summary.md || { cat results/summary.md; fail "summary row"; }
+grep -q "^| isoelectricBrownianSlowWeb | 0.02 |" results/summary.md || { cat results/summary.md; fail "summary row"; }
 [ -s results/contacts.png ] || fail "no contacts.png"
-grep -q "^| isoelectricBrownian | 0.02 | none |" results/where.md || { cat results/where.md; fail "where row"; }
+grep -q "^| isoelectricBrownianSlowWeb | 0.02 | none |" results/where.md || { cat results/where.md; fail "where row"; }
 [ -s results/where.png ] || fail "no where.png"
 # the fill starts every pair 100 nm apart: after two steps none within 50 nm
-grep -q "^| isoelectricBrownian | 0.02 | none | 0 | 0 | 0 | 0 |" results/gaps.md \
+grep -q "^| isoelectricBrownianSlowWeb | 0.02 | none | 0 | 0 | 0 | 0 |" results/gaps.md \
     || { cat results/gaps.md; fail "gaps row"; }
 [ -s results/gaps.png ] || fail "no gaps.png"
 echo PASS
