@@ -49,7 +49,11 @@
            [-lubricationOuterCutoff 1e-7] [-touchingGap 0.01 R_min]
            [-solidsFraction phi]]
     Prints key = value lines: debyeLength, barrier (k_B T) and barrierGap,
-    the energy at contact (the inner cut-off), the secondary minimum;
+    the energy at contact (the inner cut-off), the secondary minimum, the
+    largest repulsive force beyond the inner cut-off and its gap (what a
+    flow must push a pair with to force it over the barrier without
+    Brownian motion: compare with the order 6 pi mu G R1 R2 of a shear
+    rate G; 0 when the pair only attracts);
     with -ccc the salt concentration at which the barrier is height_kT
     (bisection in log c over 1e-4 ... 1e4 mol/m^3); with -zetaAt the
     zeta potential (of both surfaces, with the sign given) at which it
@@ -281,6 +285,10 @@ struct Barrier
     double height = 0, gap = 0;             // the largest U beyond the inner cut-off
     double contact = 0;                     // U at the inner cut-off
     double secondary = 0, secondaryGap = 0; // the lowest U beyond the barrier
+    // the largest repulsive F beyond the inner cut-off [N] (0, at gap 0,
+    // when the pair only attracts): the push a flow must exceed to press
+    // a pair over the barrier without Brownian motion
+    double repulsion = 0, repulsionGap = 0;
 };
 
 Barrier barrier(const Curve& c, const Options& o)
@@ -294,6 +302,7 @@ Barrier barrier(const Curve& c, const Options& o)
         if (c.h[k] < o.inner) continue;
         if (first) { b.contact = c.U[k]; first = false; }
         if (c.U[k] > b.height) { b.height = c.U[k]; b.gap = c.h[k]; top = k; }
+        if (c.F[k] > b.repulsion) { b.repulsion = c.F[k]; b.repulsionGap = c.h[k]; }
     }
     for (std::size_t k = top; k < c.h.size(); k++)
     {
@@ -361,6 +370,8 @@ int main(int argc, char** argv)
         std::printf("contactEnergy = %.6g kT\n", b.contact/kT);
         std::printf("secondaryMinimum = %.6g kT\nsecondaryMinimumGap = %.6g m\n",
                     b.secondary/kT, b.secondaryGap);
+        std::printf("largestRepulsion = %.6g N\nlargestRepulsionGap = %.6g m\n",
+                    b.repulsion, b.repulsionGap);
         if (o.stability)
         {
             const double S = o.R1 + o.R2;

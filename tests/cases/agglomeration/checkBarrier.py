@@ -17,6 +17,8 @@ so that
     Gamma^2 = e A R* kappa/(6 B) at a given salt.
 Asserted: the barrier of the slot coater's particles (R = 0.15 um,
 zeta = -41 mV, 1 mM, A = 0.43e-20 J) within 0.1 % and its gap within 2 %;
+the largest repulsive force, the maximum of F = -dU/dh, at -14.7 mV
+within 0.1 % and its gap within 2 %, and none at zeta 0;
 the CCC of a strongly attracting pair (A = 1e-19 J, zeta = -20 mV, Debye
 length 13 nm there) within 0.1 %; the zeta at which the slot coater's
 barrier vanishes within 0.1 % (measured: 5e-5 or better; the tool's
@@ -70,6 +72,18 @@ def check(name, value, reference, tolerance):
         failed.append(name)
 
 
+def argmax(f, lo, hi):
+    """The maximum of f on (lo, hi), unimodal there, by golden section"""
+    g = (math.sqrt(5) - 1)/2
+    for _ in range(200):
+        a, b = hi - g*(hi - lo), lo + g*(hi - lo)
+        if f(a) > f(b):
+            hi = b
+        else:
+            lo = a
+    return 0.5*(lo + hi)
+
+
 def kappa(c):
     return math.sqrt(2*NA*e*e*c/(eps*kT))
 
@@ -83,19 +97,27 @@ R, A, zeta, c = 0.15e-6, 0.43e-20, -0.041, 1.0
 Rs = R/2
 k, B = kappa(c), prefactor(Rs, zeta)
 U = lambda h: B*math.exp(-k*h) - A*Rs/(6*h)
-lo, hi = 0.4e-9, 50e-9
-g = (math.sqrt(5) - 1)/2
-for _ in range(200):
-    a, b = hi - g*(hi - lo), lo + g*(hi - lo)
-    if U(a) > U(b):
-        hi = b
-    else:
-        lo = a
-hMax = 0.5*(lo + hi)
+hMax = argmax(U, 0.4e-9, 50e-9)
 r = run('-radius', R, '-hamaker', A, '-zeta', zeta, '-salt', c, *NONE)
 check('Debye length [m]', r['debyeLength'], 1/k, 1e-6)
 check('barrier [kT]', r['barrier'], U(hMax)/kT, 0.001)
 check('barrier gap [m]', r['barrierGap'], hMax, 0.02)
+
+# 1b. the largest repulsion F = -dU/dh = kappa B exp(-kappa h) - A R*/(6 h^2)
+# at zeta -14.7 mV (the study's marginal case), by golden section
+zm = -0.0147
+Bm = prefactor(Rs, zm)
+Fm = lambda h: k*Bm*math.exp(-k*h) - A*Rs/(6*h*h)
+hF = argmax(Fm, 0.4e-9, 50e-9)
+r = run('-radius', R, '-hamaker', A, '-zeta', zm, '-salt', c, *NONE)
+check('largest repulsion [N]', r['largestRepulsion'], Fm(hF), 0.001)
+check('its gap [m]', r['largestRepulsionGap'], hF, 0.02)
+r = run('-radius', R, '-hamaker', A, '-zeta', 0, '-salt', c, *NONE)
+ok = r['largestRepulsion'] == 0 and r['largestRepulsionGap'] == 0
+print('largest repulsion at zeta 0      %g N at %g m, none expected%s'
+      % (r['largestRepulsion'], r['largestRepulsionGap'], '' if ok else '  FAIL'))
+if not ok:
+    failed.append('repulsion at zeta 0')
 
 # 2. the critical coagulation concentration of a strongly attracting pair
 A2, zeta2 = 1e-19, -0.020
