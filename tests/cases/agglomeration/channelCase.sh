@@ -44,7 +44,8 @@ resumableBox()
              print "    \"read_restart ${colloid_restart_file}\""; next }
          { print }' constant/DEM/in.liggghts > constant/DEM/in.liggghts.new
     mv constant/DEM/in.liggghts.new constant/DEM/in.liggghts
-    grep -q 'read_restart ${colloid_restart_file}' constant/DEM/in.liggghts
+    grep -q 'read_restart ${colloid_restart_file}' constant/DEM/in.liggghts \
+        || { echo "FAIL: resumableBox: no create_box in constant/DEM/in.liggghts"; exit 1; }
 }
 
 meshAndQuiescentFluid()

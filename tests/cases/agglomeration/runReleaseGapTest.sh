@@ -70,6 +70,7 @@ meshAndQuiescentFluid
 runChannelSolver "$mode"
 if [ -n "$resumeAt" ]
 then
+    [ -d "$resumeAt" ] || { echo "FAIL: no write at resumeAt $resumeAt (OpenFOAM's name, e.g. 5e-06)"; exit 1; }
     mv log.colloidDEMFoam log.colloidDEMFoam.to"$resumeAt"
     runLength 3e-05 250
     sed -i 's/^startFrom .*/startFrom       latestTime;/' system/controlDict

@@ -38,6 +38,12 @@ then
     fail "an unknown case was accepted"
 fi
 grep -q "unknown case 'noSuchCase'" unknown.out || { cat unknown.out; fail "message"; }
+# the flow change's suffix goes last
+if ./Allstudy -endTime 2e-8 isoelectricSlowWebBrownian > order.out 2>&1
+then
+    fail "isoelectricSlowWebBrownian was accepted"
+fi
+grep -q "unknown case 'isoelectricSlowWebBrownian'" order.out || { cat order.out; fail "message"; }
 [ ! -d study ] || fail "a case was set up before the unknown one was refused"
 
 ./Allstudy -endTime 2e-8 isoelectricBrownianSlowWeb > allstudy.out 2>&1 \
@@ -51,6 +57,7 @@ value() { awk -v k="$2" '$1 == k { sub(";", "", $2); print $2; exit }' "$1"; }
 [ "$(value $case/system/controlDict writeInterval)" = 500 ] || fail "writeInterval"
 grep -q "^Brownian motion: 293.15 K, seed 1" $case/log.colloidDEMFoam || fail "no Brownian motion"
 [ "$(value $case/system/slotCoaterParameters webSpeed)" = 0.1 ] || fail "webSpeed"
+grep -q "^variable webSpeed equal 0.1$" $case/DEM/slotCoater.liggghts || fail "web speed not written for the DEM"
 inflow=$(sed -n 's/^Steady flow converged .*(inflow \([^ ]*\) m^3\/s.*/\1/p' $case.log)
 echo "steady flow's inflow: $inflow m^3/s"
 awk -v q="$inflow" 'BEGIN { exit !(q != "" && (q < 0 ? -q : q) > 1e-11*(1 - 1e-6) && (q < 0 ? -q : q) < 1e-11*(1 + 1e-6)) }' \
