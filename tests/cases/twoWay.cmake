@@ -114,6 +114,15 @@ foreach(kernel satellite cellPoint)
                     ${twoWayWork}/momentum_${model}${k})
         set_tests_properties(case.twoWay.momentum.${model}${k} PROPERTIES
             TIMEOUT 120 LABELS "case;twoWay" ENVIRONMENT "${kernelEnv}")
+
+        # Without gravity, the particles starting to move through still
+        # water: their momentum ends up in the water, all of it (the first
+        # half kick's drag included)
+        add_test(NAME case.twoWay.momentumDecay.${model}${k}
+            COMMAND ${twoWayDir}/runMomentumTest.sh ${model}
+                    ${twoWayWork}/momentumDecay_${model}${k} decay)
+        set_tests_properties(case.twoWay.momentumDecay.${model}${k} PROPERTIES
+            TIMEOUT 120 LABELS "case;twoWay" ENVIRONMENT "${kernelEnv}")
     endforeach()
 
     # The tutorial's kernel is cellPoint; its satellite variant spreads

@@ -6,7 +6,10 @@
 2. The momentum of fluid plus particles, rho_f sum(eps U V) + sum(m v),
    changes only by the external force, the particles' weight less
    buoyancy W = sum((m - rho_f V_p) g): at every written time
-   |P(t) - P(t0) - W (t - t0)| <= |W| dt, dt the DEM step.  The bound is
+   |P(t) - P(t0) - W (t - t0)| <= |W| dt, dt the DEM step.  Without
+   gravity (runMomentumTest.sh ... decay: the particles start moving
+   through still water) P(t) = P(t0) over the second half of the run to
+   DECAY_TOLERANCE.  The bound is
    the integrator's: velocity Verlet gives each step's force half a kick
    at the end of the step and half at the start of the next, so the
    particles' momentum at a write lags the impulses by up to half a
@@ -31,8 +34,54 @@ import foamFields  # noqa: E402
 import particleCloud  # noqa: E402
 
 
+# The decay's momentum in the second half of the run against the start's,
+# relative.  What is left there: the integrator's lag, half a step's drag
+# impulse, now on the particles' slip through the water their own drag has
+# stirred (about 1e-5 m/s, 0.14 of their mean speed at the end; the water
+# is far from uniform after 4 ms: its viscous time across the box is 1 s),
+# measured at most 1.5e-4 (Model A, whose -eps grad p and the particles'
+# pressure-gradient force leave about 1e-4 more than Model B's 4e-5).  A
+# fresh start that gave the particles their first half kick of drag
+# without giving it to the water missed 3.1e-2.
+DECAY_TOLERANCE = 5e-4
+
+
 def number(text, key):
     return float(re.search(r'\b%s\s+([^;\s]+)\s*;' % key, text).group(1))
+
+
+def check_settling(times, momentum, weight, dt):
+    """P(t) = P(t0) + W (t - t0) at every write, to the integrator's lag"""
+    bound = dt*math.sqrt(sum(w*w for w in weight))
+    worst = 0
+    for t, P in zip(times[1:], momentum[1:]):
+        expected = [momentum[0][k] + weight[k]*(t - times[0]) for k in range(3)]
+        err = math.sqrt(sum((P[k] - expected[k])**2 for k in range(3)))
+        worst = max(worst, err)
+    span = [weight[k]*(times[-1] - times[0]) for k in range(3)]
+    print('total momentum against P(t0) + W (t - t0) over %d times: at most'
+          ' %.3g of |W| dt (bound 1), %.2e of |W (t_end - t0)|'
+          % (len(times) - 1, worst/bound, worst/math.sqrt(sum(x*x for x in span))))
+    print('  P(end) - P(t0) = %s, W (t_end - t0) = %s' % (
+        ' '.join('%.6g' % (momentum[-1][k] - momentum[0][k]) for k in range(3)),
+        ' '.join('%.6g' % x for x in span)))
+    return worst <= bound
+
+
+def check_decay(times, momentum):
+    """Without gravity the momentum the particles started with is the sum's
+    for ever, up to the lag at a write (DECAY_TOLERANCE)."""
+    start = math.sqrt(sum(x*x for x in momentum[0]))
+    worst = 0
+    for t, P in zip(times, momentum):
+        if t >= 0.5*times[-1]:
+            worst = max(worst, math.sqrt(sum((P[k] - momentum[0][k])**2
+                                             for k in range(3))))
+    print('momentum of the decay: |P(t) - P(t0)| at most %.3g of |P(t0)| over'
+          ' the second half of the run (at most %g); at the end %s'
+          % (worst/start, DECAY_TOLERANCE, ' '.join(
+              '%.3g' % ((momentum[-1][k] - momentum[0][k])/start) for k in range(3))))
+    return worst <= DECAY_TOLERANCE*start
 
 
 def main():
@@ -84,20 +133,10 @@ def main():
         w = [math.fsum((m - b)*g[k] for m, b in zip(masses, buoy)) for k in range(3)]
         weight = weight or w
 
-    bound = dt*math.sqrt(sum(w*w for w in weight))
-    worst = 0
-    for t, P in zip(times[1:], momentum[1:]):
-        expected = [momentum[0][k] + weight[k]*(t - times[0]) for k in range(3)]
-        err = math.sqrt(sum((P[k] - expected[k])**2 for k in range(3)))
-        worst = max(worst, err)
-    span = [weight[k]*(times[-1] - times[0]) for k in range(3)]
-    print('total momentum against P(t0) + W (t - t0) over %d times: at most'
-          ' %.3g of |W| dt (bound 1), %.2e of |W (t_end - t0)|'
-          % (len(times) - 1, worst/bound, worst/math.sqrt(sum(x*x for x in span))))
-    print('  P(end) - P(t0) = %s, W (t_end - t0) = %s' % (
-        ' '.join('%.6g' % (momentum[-1][k] - momentum[0][k]) for k in range(3)),
-        ' '.join('%.6g' % x for x in span)))
-    ok &= worst <= bound
+    if any(weight):
+        ok &= check_settling(times, momentum, weight, dt)
+    else:
+        ok &= check_decay(times, momentum)
 
     checks = [float(x) for x in re.findall(
         r'depositKernel: transpose check: .*\(relative difference (\S+)\)', log)]
