@@ -123,6 +123,13 @@ foreach(kernel satellite cellPoint)
                     ${twoWayWork}/momentumDecay_${model}${k} decay)
         set_tests_properties(case.twoWay.momentumDecay.${model}${k} PROPERTIES
             TIMEOUT 120 LABELS "case;twoWay" ENVIRONMENT "${kernelEnv}")
+        # ... with lubrication between them: the drag of particles in
+        # lubricated pairs comes through the implicit update's coupled path
+        add_test(NAME case.twoWay.momentumDecayLubricated.${model}${k}
+            COMMAND ${twoWayDir}/runMomentumTest.sh ${model}
+                    ${twoWayWork}/momentumDecayLubricated_${model}${k} decayLubricated)
+        set_tests_properties(case.twoWay.momentumDecayLubricated.${model}${k} PROPERTIES
+            TIMEOUT 120 LABELS "case;twoWay" ENVIRONMENT "${kernelEnv}")
     endforeach()
 
     # The tutorial's kernel is cellPoint; its satellite variant spreads
