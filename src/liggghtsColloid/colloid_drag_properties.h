@@ -12,8 +12,10 @@
      dragforce  vector  F_i, explicit part (pressure gradient, buoyancy,
                         ...) [nN]
      colloidDragImpulse vector  sum over the steps of dt K_i (u_f,i - v_i'),
-                        added by the implicit update; the coupling reads it
-                        and sets it to zero at each exchange [nN us]
+                        added by the implicit update (at a fresh start
+                        with the set-up's half step, colloidFirstKick);
+                        the coupling reads it and sets it to zero at each
+                        exchange [nN us]
      colloidDragSet     scalar  1 once the coupling has set the three above
                         for the atom, 0 for an atom inserted since: the
                         implicit update then calls the coupling's drag

@@ -12,6 +12,7 @@
 #include <cstdio>
 #include <cstring>
 #include <map>
+#include <set>
 #include <mpi.h>
 #include "atom.h"
 #include "comm.h"
@@ -64,6 +65,13 @@ std::map<const LAMMPS *, DragCallback> &dragCallbacks()
 {
     static std::map<const LAMMPS *, DragCallback> callbacks;
     return callbacks;
+}
+
+// the instances whose next set-up is the particles' first half kick
+std::set<const LAMMPS *> &firstKicks()
+{
+    static std::set<const LAMMPS *> instances;
+    return instances;
 }
 
 // symmetric 3x3 block stored as xx yy zz xy xz yz
@@ -140,6 +148,12 @@ void FixColloidImplicit::setDragCallback(LAMMPS *lmp, void (*callback)(void *), 
 {
     if (callback) dragCallbacks()[lmp] = DragCallback{callback, context};
     else dragCallbacks().erase(lmp);
+}
+
+void FixColloidImplicit::setFirstKick(LAMMPS *lmp, bool on)
+{
+    if (on) firstKicks().insert(lmp);
+    else firstKicks().erase(lmp);
 }
 
 /* ---------------------------------------------------------------------- */
@@ -317,17 +331,17 @@ void FixColloidImplicit::pre_force(int)
 }
 
 // Before the first step the forces get half a kick (velocity Verlet):
-// the update over dt/2. When steps follow (run N, N > 0: LIGGGHTS sets
-// nsteps before the set-up), that half kick is momentum the particles
-// take from the fluid, and its drag impulse goes to the coupling with the
-// steps' (a fresh start with particles moving through the fluid lost
-// 0.5 dt K |u_f - v| of each particle's momentum otherwise: 3 % of it in
-// the periodic box of the momentum test, dt K/m = 0.055). The set-up of a
-// run 0 (the coupling's rebuilds at writes and on resuming) gives no
-// kick: its forces are replaced before any step.
+// the update over dt/2. At a fresh start (the coupling marks it,
+// colloidFirstKick) that kick is momentum the particles take from the
+// fluid, and its drag impulse goes to the coupling with the steps' (it was
+// lost before: 3 % of the particles' momentum in the periodic box of the
+// momentum test, dt K/m = 0.055). Any other set-up replaces forces whose
+// impulse was counted in full with their step (the first half kick given,
+// the second replaced by this one): it counts nothing, or the half would
+// be counted twice.
 void FixColloidImplicit::setup(int)
 {
-    solve(0.5*update->dt, update->nsteps > 0);
+    solve(0.5*update->dt, update->nsteps > 0 && firstKicks().count(lmp) > 0);
 }
 
 void FixColloidImplicit::pre_final_integrate()

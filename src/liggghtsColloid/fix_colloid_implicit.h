@@ -107,6 +107,11 @@ public:
     //  instance, not in the fix, which attach() may re-create
     static void setDragCallback(LAMMPS *lmp, void (*callback)(void *), void *context);
 
+    //- The coupling's mark of a set-up that is the particles' first half
+    //  kick (colloidFirstKick in register_colloid_models.h); kept per
+    //  LIGGGHTS instance, as the callback
+    static void setFirstKick(LAMMPS *lmp, bool on);
+
     FixColloidImplicit(LAMMPS *lmp, int narg, char **arg);
 
     int setmask();

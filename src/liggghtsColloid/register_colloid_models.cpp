@@ -45,6 +45,11 @@ extern "C" void colloidDragCallback(void *lmp, void (*callback)(void *), void *c
     LAMMPS_NS::FixColloidImplicit::setDragCallback(static_cast<LAMMPS_NS::LAMMPS *>(lmp), callback, context);
 }
 
+extern "C" void colloidFirstKick(void *lmp, int on)
+{
+    LAMMPS_NS::FixColloidImplicit::setFirstKick(static_cast<LAMMPS_NS::LAMMPS *>(lmp), on != 0);
+}
+
 extern "C" void colloidReneighborAt(void *lmp, long long step)
 {
     LAMMPS_NS::FixColloidReneighbor::at(static_cast<LAMMPS_NS::LAMMPS *>(lmp), step);

@@ -28,6 +28,14 @@
    sets them. A NULL callback removes the hook; the hook outlives the
    fix's re-creation by colloidImplicitUpdate.
 
+   colloidFirstKick(lmp, on): with on = 1, the set-up of the next run
+   command (a run of N > 0 steps, with "pre yes") is the particles' first
+   half kick (a fresh start): the update hands its drag impulse to the
+   coupling with those of the steps. Call it again with on = 0 after that
+   run. Any other set-up (of a run 0, or one LIGGGHTS makes for particles
+   that have already taken steps) replaces forces whose impulse was
+   counted in full with their step, and counts nothing.
+
    colloidReneighborAt(lmp, step) rebuilds the neighbour lists of lmp at
    the given DEM step (fix_colloid_reneighbor.h: what a fix does at the
    rebuild, e.g. massflow/mesh deleting the particles it counted, is
@@ -58,6 +66,7 @@ extern "C" __attribute__((visibility("default"))) void colloidDragCallback
     void (*callback)(void *context),
     void *context
 );
+extern "C" __attribute__((visibility("default"))) void colloidFirstKick(void *lmp, int on);
 extern "C" __attribute__((visibility("default"))) void colloidReneighborAt
 (
     void *lmp,

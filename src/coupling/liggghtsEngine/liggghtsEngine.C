@@ -300,7 +300,21 @@ void Foam::liggghtsEngine::run(long nSteps)
         line += setUpNext_ ? " pre yes post no" : " pre no post no";
     }
     const bool withParticles = nGlobal() > 0;
+
+    // The set-up asked for before steps is the particles' first half
+    // kick: its drag impulse is the fluid's too (the set-ups of a run 0,
+    // and those LIGGGHTS makes until a run starts with particles, replace
+    // forces whose impulse a step counted)
+    const bool firstKick = setUpWithParticles_ && setUpNext_ && nSteps > 0;
+    if (firstKick)
+    {
+        colloidFirstKick(lmp_, 1);
+    }
     command(line);
+    if (firstKick)
+    {
+        colloidFirstKick(lmp_, 0);
+    }
     setUpWithParticles_ = setUpWithParticles_ || withParticles;
     setUpNext_ = false;
 }

@@ -19,7 +19,7 @@
    scripts), the sampling is the transpose of the deposit at every sample
    to 1e-12 (the log's 'depositKernel: transpose check' lines).
 
-usage: checkMomentum.py caseDir
+usage: checkMomentum.py caseDir [--lubricated]
 """
 import math
 import os
@@ -44,6 +44,14 @@ import particleCloud  # noqa: E402
 # fresh start that gave the particles their first half kick of drag
 # without giving it to the water missed 3.1e-2.
 DECAY_TOLERANCE = 5e-4
+# ... and the share of it the water holds at the end: without drag it
+# would hold none and the sum would still be kept
+HANDED_OVER = 0.9
+# With lubrication (runMomentumTest.sh ... decayLubricated) the particles
+# in lubricated pairs must be there: each DEM step's largest group solve
+# takes at least one iteration where a pair term exists (0 without), and
+# most steps must have them
+PAIRED_STEPS = 0.5
 
 
 def number(text, key):
@@ -68,20 +76,26 @@ def check_settling(times, momentum, weight, dt):
     return worst <= bound
 
 
-def check_decay(times, momentum):
+def check_decay(times, momentum, fluid):
     """Without gravity the momentum the particles started with is the sum's
-    for ever, up to the lag at a write (DECAY_TOLERANCE)."""
+    for ever, up to the lag at a write (DECAY_TOLERANCE); and the drag has
+    handed it to the water: at the end the water holds at least
+    HANDED_OVER of it (the particles' share of the common velocity is
+    their mass over the whole, 0.032 in the box)."""
     start = math.sqrt(sum(x*x for x in momentum[0]))
+    handed = sum(fluid[k]*momentum[0][k] for k in range(3))/start**2
     worst = 0
     for t, P in zip(times, momentum):
         if t >= 0.5*times[-1]:
             worst = max(worst, math.sqrt(sum((P[k] - momentum[0][k])**2
                                              for k in range(3))))
     print('momentum of the decay: |P(t) - P(t0)| at most %.3g of |P(t0)| over'
-          ' the second half of the run (at most %g); at the end %s'
+          ' the second half of the run (at most %g); at the end %s; the'
+          ' water holds %.4f of P(t0) (at least %g)'
           % (worst/start, DECAY_TOLERANCE, ' '.join(
-              '%.3g' % ((momentum[-1][k] - momentum[0][k])/start) for k in range(3))))
-    return worst <= DECAY_TOLERANCE*start
+              '%.3g' % ((momentum[-1][k] - momentum[0][k])/start) for k in range(3)),
+             handed, HANDED_OVER))
+    return worst <= DECAY_TOLERANCE*start and handed >= HANDED_OVER
 
 
 def main():
@@ -130,13 +144,14 @@ def main():
         else:
             pf = [0, 0, 0]      # the case starts with the fluid at rest
         momentum.append([a + b for a, b in zip(pp, pf)])
+        fluid = pf
         w = [math.fsum((m - b)*g[k] for m, b in zip(masses, buoy)) for k in range(3)]
         weight = weight or w
 
     if any(weight):
         ok &= check_settling(times, momentum, weight, dt)
     else:
-        ok &= check_decay(times, momentum)
+        ok &= check_decay(times, momentum, fluid)
 
     checks = [float(x) for x in re.findall(
         r'depositKernel: transpose check: .*\(relative difference (\S+)\)', log)]
@@ -144,6 +159,14 @@ def main():
         print('transpose of the deposit: %d samples, %.2e relative (max)'
               % (len(checks), max(checks)))
         ok &= max(checks) <= 1e-12
+
+    if '--lubricated' in sys.argv[2:]:
+        iterations = [float(x) for x in re.findall(
+            r'Implicit update of lubrication and drag: (\S+) conjugate-gradient'
+            r' iterations per DEM step on average', log)]
+        print('lubricated pairs: %.3g iterations of the implicit update per DEM'
+              ' step on average (at least %g)' % (iterations[-1], PAIRED_STEPS))
+        ok &= iterations[-1] >= PAIRED_STEPS
 
     print('PASS' if ok else 'FAIL')
     return 0 if ok else 1

@@ -11,6 +11,10 @@ set -e
 model=$1
 work=$2
 variant=${3:-settling}
+case "$variant" in
+    settling|decay|decayLubricated) ;;
+    *) echo "$0: variant $variant: settling, decay or decayLubricated" 1>&2; exit 1 ;;
+esac
 here=$(cd "$(dirname "$0")" && pwd)
 source "$here/caseFunctions.sh"
 copyCase "$here/periodicBox" "$work"
@@ -47,4 +51,4 @@ checkTranspose
 blockMesh > log.blockMesh 2>&1
 runSolver 1
 
-python3 "$here/checkMomentum.py" "$work"
+python3 "$here/checkMomentum.py" "$work" $([ "$variant" = decayLubricated ] && echo --lubricated)
