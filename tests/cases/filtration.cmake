@@ -62,6 +62,21 @@ set_tests_properties(case.filtration.parallel PROPERTIES
     FIXTURES_REQUIRED filtration_stable
     ENVIRONMENT PYTHONDONTWRITEBYTECODE=1)
 
+# filtration.exchangeLimit: the start-up limit of the explicit two-way
+#   exchange on the fluid step (exchangeStability.H; 3.4e-7 s for the
+#   tutorial's particles) against the cake it was made for, stable variant
+#   at test size to 1 ms: at 3e-7 s the cake holds (the net drag on the
+#   particles down at every fluid step after 0.3 ms, at most 3 times its
+#   median); 6e-7 s is refused at start-up (couplingInterval and its
+#   allowed range named, nothing but logs written), and run anyway with
+#   twoWay/freeFluidFraction 0.8 the cake is blown apart (the drag up at 5
+#   fluid steps or more, bursts of 20 times its median or more).
+add_test(NAME case.filtration.exchangeLimit
+    COMMAND ${filtrationDir}/runExchangeLimitTest.sh ${filtrationWork}/exchangeLimit)
+set_tests_properties(case.filtration.exchangeLimit PROPERTIES
+    TIMEOUT 1200 LABELS "case;filtration;twoWay"
+    ENVIRONMENT PYTHONDONTWRITEBYTECODE=1)
+
 # filtration.consolidation: the stable test-size cake under a piston at
 #   200, 400, 600, 800, 1000 kPa (DEM alone: the drained equilibrium):
 #   at rest at every step with the piston force within 2 % of pressure x

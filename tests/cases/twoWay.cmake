@@ -172,7 +172,8 @@ set_tests_properties(case.twoWay.demGrid.4ranks PROPERTIES
 foreach(variant unknownForceModel unknownDragModel epsilonMinZero epsilonMinOne
                 unknownModelType subCycles steadyState noPIMPLE
                 modelBPressureGradient modelAWithoutPressureGradient
-                epsilonMinAboveBed unknownKernel kernelRadiusWithCellPoint)
+                epsilonMinAboveBed unknownKernel kernelRadiusWithCellPoint
+                freeFluidFractionZero backwardScheme)
     add_test(NAME case.twoWay.badInput.${variant}
         COMMAND ${twoWayDir}/runBadInputTest.sh ${variant} ${twoWayWork}/pack
                 ${twoWayWork}/badInput_${variant})

@@ -3,6 +3,7 @@
 #include "OSspecific.H"
 #include "keywordCheck.H"
 #include "Tuple2.H"
+#include "colloidModels/exchangeStability.H"
 
 const Foam::dictionary& Foam::couplingProperties::requiredSubDict
 (
@@ -71,6 +72,7 @@ Foam::couplingProperties::couplingProperties(const objectRegistry& obr)
     twoWay_(false),
     modelB_(false),
     epsilonMin_(1),
+    freeFluidFraction_(colloid::exchangeStability::looseFluidFraction),
     kernel_("satellite"),
     kernelRadius_(0),
     selfInducedVelocity_(false),
@@ -134,6 +136,20 @@ Foam::couplingProperties::couplingProperties(const objectRegistry& obr)
                 << "Keyword 'epsilonMin' in " << tw.name() << " is "
                 << epsilonMin_ << "; allowed range: (0, 1)"
                 << exit(FatalIOError);
+        }
+
+        freeFluidFraction_ = tw.getOrDefault<scalar>
+        (
+            "freeFluidFraction",
+            colloid::exchangeStability::looseFluidFraction
+        );
+        if (!(freeFluidFraction_ > 0 && freeFluidFraction_ <= 1))
+        {
+            FatalIOErrorInFunction(tw)
+                << "Keyword 'freeFluidFraction' in " << tw.name() << " is "
+                << freeFluidFraction_ << "; allowed range: (0, 1] (default "
+                << colloid::exchangeStability::looseFluidFraction
+                << ", random loose packing)" << exit(FatalIOError);
         }
 
         kernel_ = tw.getOrDefault<word>("kernel", "satellite");
@@ -322,8 +338,8 @@ Foam::couplingProperties::couplingProperties(const objectRegistry& obr)
         keywordCheck
         (
             dict.subDict("twoWay"),
-            {"modelType", "epsilonMin", "kernel", "kernelRadius",
-             "selfInducedVelocity", "clipFluidFraction"},
+            {"modelType", "epsilonMin", "freeFluidFraction", "kernel",
+             "kernelRadius", "selfInducedVelocity", "clipFluidFraction"},
             true
         );
     }

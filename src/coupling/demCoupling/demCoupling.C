@@ -1,5 +1,6 @@
 #include "demCoupling.H"
 #include "measuredErrors.H"
+#include "colloidModels/exchangeStability.H"
 #include "demUnits.H"
 #include "liggghtsColloid/colloid_drag_properties.h"
 #include "particleCloudWriter.H"
@@ -103,6 +104,10 @@ void Foam::demCoupling::checkTimeStep() const
         << props_.demTimeStep()/tau << " of it (the DEM prints its own"
         << " limits in log.liggghts)" << endl;
     checkRelaxationTime(tau);
+    if (props_.twoWay())
+    {
+        checkExchangeStability(mass);
+    }
     reportMeasuredErrors(runTime);
 
     if (runTime.controlDict().getOrDefault<bool>("adjustTimeStep", false))
@@ -130,6 +135,86 @@ void Foam::demCoupling::checkRelaxationTime(const scalar tau) const
             << " relaxation time m/K = " << tau << " s: the particle's"
             << " inertia would not be resolved. Allowed range: timeStep <= "
             << tau
+            << exit(FatalIOError);
+    }
+}
+
+
+void Foam::demCoupling::checkExchangeStability(const scalar mass) const
+{
+    // The fluid step and its DEM interval see each other a step late; over
+    // free particles (looser than random loose packing, or than the case's
+    // twoWay/freeFluidFraction) the lag amplifies a disturbance once the
+    // fluid step is a few relaxation times (exchangeStability.H).  Model
+    // B's drag is K/eps.
+    const scalar d = props_.particleDiameter();
+    const bool modelB = props_.modelB();
+    const auto tau = [&](const double eps)
+    {
+        particleContext c(restContext(0.5*d, mass, Zero));
+        c.eps = eps;
+        return (modelB ? eps : 1.0)*mass/drag_->K(c);
+    };
+    const scalar epsFree = props_.freeFluidFraction();
+    const colloid::exchangeStability::StepLimit limit =
+        colloid::exchangeStability::largestStableStep
+        (
+            tau,
+            modelB,
+            props_.rhoFluid()/props_.particleDensity(),
+            epsFree
+        );
+
+    const scalar couplingDt = props_.couplingTimeStep();
+    Info<< "Time-step limit, explicit two-way exchange over free particles"
+        << " at fluid fractions " << epsFree << " to 1 (twoWay/"
+        << "freeFluidFraction): ";
+    if (std::isinf(limit.step))
+    {
+        Info<< "none, stable at any fluid step (fluid step " << couplingDt
+            << " s)" << endl;
+        return;
+    }
+    Info<< "fluid step <= " << limit.step << " s (set at fluid fraction "
+        << limit.eps << "); fluid step " << couplingDt << " s is "
+        << couplingDt/limit.step << " of it" << endl;
+
+    if (couplingDt > limit.step)
+    {
+        const dictionary& demDict = props_.subDict("DEM");
+        const label maxInterval =
+            label(limit.step/props_.demTimeStep()*(1 + 1e-12));
+        FatalIOErrorInFunction(demDict)
+            << "Keyword 'couplingInterval' in " << demDict.name() << " is "
+            << props_.couplingInterval() << ": the fluid step "
+            << props_.couplingInterval() << " x " << props_.demTimeStep()
+            << " = " << couplingDt << " s is longer than the largest step "
+            << limit.step << " s at which the explicit two-way exchange is"
+            << " stable: a layer of free particles at fluid fraction "
+            << limit.eps << " would be blown apart.  Allowed range: ";
+        if (maxInterval >= 1)
+        {
+            FatalIOError
+                << "couplingInterval <= " << maxInterval;
+        }
+        else if (limit.step > 0)
+        {
+            FatalIOError
+                << "none at this DEM timeStep; the fluid step must be <= "
+                << limit.step << " s (a shorter DEM 'timeStep' and"
+                << " couplingInterval 1)";
+        }
+        else
+        {
+            // Lagged fluid acceleration on dense, light particles: an
+            // added-mass instability at any step (exchangeStability.H)
+            FatalIOError
+                << "none: that layer is unstable at any fluid step";
+        }
+        FatalIOError
+            << " (or, if no particles of this case move freely at fluid"
+            << " fractions below " << epsFree << ", state the densest"
+            << " that do as twoWay/freeFluidFraction)"
             << exit(FatalIOError);
     }
 }
@@ -838,12 +923,17 @@ void Foam::demCoupling::checkTransientSetup() const
         ITstream& is = ddt.lookup("default");
         is >> scheme;
     }
-    if (scheme == "steadyState" || scheme == "none")
+    // Euler only: the start-up limit of the explicit exchange on the
+    // fluid step (exchangeStability.H) is derived for it; with backward,
+    // d(eps)/dt draws on two intervals and dense free layers of Model B
+    // are unstable up to eps = 2/3 instead of 0.5
+    if (scheme != "Euler")
     {
         FatalIOErrorInFunction(ddt)
-            << "couplingMode twoWay solves the fluid in time: keyword"
+            << "couplingMode twoWay solves the fluid in time with the"
+            << " exchange's stability limit derived for Euler: keyword"
             << " 'default' of ddtSchemes in " << ddt.name() << " is '"
-            << scheme << "'; allowed: Euler, backward, CrankNicolson"
+            << scheme << "'; allowed: Euler"
             << exit(FatalIOError);
     }
 

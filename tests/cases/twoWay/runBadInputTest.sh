@@ -10,6 +10,7 @@
 #             epsilonMinAboveBed (the bed's cells, eps ~ 0.39, below
 #             epsilonMin 0.5: the fluid fraction would be clipped)
 #             unknownKernel kernelRadiusWithCellPoint
+#             freeFluidFractionZero backwardScheme
 set -e
 variant=$1
 pack=$2
@@ -42,7 +43,10 @@ case $variant in
         expect="Keyword 'deltaT' in .*controlDict\"? is 1.5e-05 s but must equal DEM couplingInterval x timeStep = 10 x 1e-06" ;;
     steadyState)
         foamDictionary system/fvSchemes -entry ddtSchemes/default -set steadyState > /dev/null
-        expect="couplingMode twoWay solves the fluid in time: keyword 'default' of ddtSchemes in .*fvSchemes.ddtSchemes\"? is 'steadyState'; allowed: Euler, backward, CrankNicolson" ;;
+        expect="couplingMode twoWay solves the fluid in time with the exchange's stability limit derived for Euler: keyword 'default' of ddtSchemes in .*fvSchemes.ddtSchemes\"? is 'steadyState'; allowed: Euler" ;;
+    backwardScheme)
+        foamDictionary system/fvSchemes -entry ddtSchemes/default -set backward > /dev/null
+        expect="couplingMode twoWay solves the fluid in time with the exchange's stability limit derived for Euler: keyword 'default' of ddtSchemes in .*fvSchemes.ddtSchemes\"? is 'backward'; allowed: Euler" ;;
     noPIMPLE)
         foamDictionary system/fvSolution -entry PIMPLE -remove > /dev/null
         expect="couplingMode twoWay needs a 'PIMPLE' dictionary in .*fvSolution" ;;
@@ -62,6 +66,9 @@ case $variant in
         foamDictionary $props -entry twoWay/kernel -set cellPoint > /dev/null
         foamDictionary $props -entry twoWay/kernelRadius -set 1e-4 > /dev/null
         expect="Keyword 'kernelRadius' in .*couplingProperties.twoWay\"? is 0.0001 m, but 'kernel' is 'cellPoint', whose support is set by the mesh; allowed: 0" ;;
+    freeFluidFractionZero)
+        foamDictionary $props -entry twoWay/freeFluidFraction -add 0 > /dev/null
+        expect="Keyword 'freeFluidFraction' in .*couplingProperties.twoWay\"? is 0; allowed range: \(0, 1\] \(default 0.445, random loose packing\)" ;;
     *)  echo "unknown variant $variant"; exit 2 ;;
 esac
 
