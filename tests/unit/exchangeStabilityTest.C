@@ -183,8 +183,11 @@ TEST(ExchangeStability, DiluteLayersAreStableAtAnyStep)
     // Model B at large steps: |lambda| = (1 - eps)/eps < 1 above eps = 0.5
     EXPECT_TRUE(std::isinf(criticalStepRatio(0.6, true, rGlassWater)));
     EXPECT_TRUE(std::isfinite(criticalStepRatio(0.45, true, rGlassWater)));
-    // Model A, with the given-back term, is stable from 0.75 up
+    // Model A, with the given-back term, is stable from 0.75 up, also for
+    // particles as light as the fluid and lighter
     EXPECT_TRUE(std::isinf(criticalStepRatio(0.76, false, rGlassWater)));
+    EXPECT_TRUE(std::isinf(criticalStepRatio(0.76, false, 1)));
+    EXPECT_TRUE(std::isinf(criticalStepRatio(0.76, false, 3)));
     EXPECT_TRUE(std::isfinite(criticalStepRatio(0.74, false, rGlassWater)));
     // and is at large steps as stepped directly: decaying at 0.76,
     // growing at 0.74

@@ -145,7 +145,7 @@ void Foam::demCoupling::checkExchangeStability(const scalar mass) const
     // The fluid step and its DEM interval see each other a step late; over
     // free particles (looser than random loose packing, or than the case's
     // twoWay/freeFluidFraction) the lag amplifies a disturbance once the
-    // fluid step is a few relaxation times (exchangeStability.H).  Model
+    // fluid step is about a relaxation time (exchangeStability.H).  Model
     // B's drag is K/eps.
     const scalar d = props_.particleDiameter();
     const bool modelB = props_.modelB();

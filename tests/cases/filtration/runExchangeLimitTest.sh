@@ -49,7 +49,7 @@ grep -E -q "$expect" runs/stable/log.colloidDEMFoam \
     || { echo "FAIL: no message matching: $expect"; tail -20 runs/stable/log.colloidDEMFoam; exit 1; }
 # Nothing but the logs changed since the solver started: the case as
 # prepared (mesh, fields, DEM input) before it, no time folder after
-written=$(cd runs/stable && find . -newer log.blockMesh -type f ! -name 'log.*' | sort)
+written=$(cd runs/stable && find . -newer log.blockMesh ! -path . ! -name 'log.*' | sort)
 [ -z "$written" ] || { echo "FAIL: the refused run wrote: $written"; exit 1; }
 grep -E -o "Allowed range: couplingInterval <= [0-9]+" runs/stable/log.colloidDEMFoam
 mv runs/stable/log.colloidDEMFoam log.refused
