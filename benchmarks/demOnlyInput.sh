@@ -23,6 +23,11 @@
 #   coupledRate log                  from colloidDEMFoam's log (master, after
 #                                    the start-up): particle-steps per second
 #                                    per rank, DEM and coupling seconds
+#   demBreakdown log                 LIGGGHTS' own breakdown of a serial
+#                                    log's last loop in ns per particle-step: pair,
+#                                    neighbour lists, communication, the rest
+#                                    (fixes, integration, output); and the
+#                                    neighbours per particle
 
 # The case's couplingProperties with its #include and $ expanded, read
 # once per input
@@ -95,6 +100,19 @@ demRate()
 demAtoms()
 {
     grep '^Loop time of' "$1" | tail -1 | awk '{ print $12 }'
+}
+
+demBreakdown()
+{
+    awk '/^Loop time of/ { t = $4; p = $6; s = $9; n = $12 }
+         /^Pair  time/ { pair = $5 }
+         /^Neigh time/ { neigh = $5 }
+         /^Comm  time/ { comm = $5 }
+         /^Outpt time/ { outpt = $5 }
+         /^Other time/ { other = $5 }
+         /^Ave neighs\/atom/ { nb = $4 }
+         END { if (n == 0) exit 1; f = 1e9*p/(s*n)
+               printf "%.4g %.4g %.4g %.4g %.4g\n", pair*f, neigh*f, comm*f, (outpt + other)*f, nb }' "$1"
 }
 
 coupledRate()
