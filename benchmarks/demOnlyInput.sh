@@ -27,7 +27,7 @@
 #                                    log's last loop in ns per particle-step: pair,
 #                                    neighbour lists, communication, the rest
 #                                    (fixes, integration, output); and the
-#                                    neighbours per particle
+#                                    pairs listed per particle (half list)
 
 # The case's couplingProperties with its #include and $ expanded, read
 # once per input
@@ -108,11 +108,9 @@ demBreakdown()
          /^Pair  time/ { pair = $5 }
          /^Neigh time/ { neigh = $5 }
          /^Comm  time/ { comm = $5 }
-         /^Outpt time/ { outpt = $5 }
-         /^Other time/ { other = $5 }
          /^Ave neighs\/atom/ { nb = $4 }
          END { if (n == 0) exit 1; f = 1e9*p/(s*n)
-               printf "%.4g %.4g %.4g %.4g %.4g\n", pair*f, neigh*f, comm*f, (outpt + other)*f, nb }' "$1"
+               printf "%.4g %.4g %.4g %.4g %.4g\n", pair*f, neigh*f, comm*f, (t - pair - neigh - comm)*f, nb }' "$1"
 }
 
 coupledRate()
