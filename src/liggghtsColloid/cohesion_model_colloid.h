@@ -66,6 +66,7 @@ COHESION_MODEL(COHESION_COLLOID_VDW_DL_LUB,colloid/vdw/dl/lub,23)
 #include "contact_models.h"
 #include "cohesion_model_base.h"
 #include "fix_colloid_implicit.h"
+#include "fix_colloid_pair_list.h"
 #include "fix_property_atom.h"
 #include "fix_wall_gran.h"
 #include "modify.h"
@@ -139,6 +140,9 @@ public:
             error->all(FLERR, msg);
         }
         neighbor->register_contact_dist_factor(1.0 + rangeSI_/U::length/rMin);
+        // pairs: the list trimmed to the range (fix_colloid_pair_list.h);
+        // before the implicit update, which must stay the last fix
+        if (!isWall_) FixColloidPairList::attach(lmp, rangeSI_/U::length);
         if (lubOn) attachImplicitUpdate();
         if (vdwOn) checkContactHoldsPull(read, rMin);
         if (isWall_) checkPrimitiveWallReach();

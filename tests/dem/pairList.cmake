@@ -1,0 +1,26 @@
+# The colloid pair style's neighbour list trimmed to the colloid range
+# (pairListTest.cpp; label agglomeration: issue 12's run times); own
+# main, so that the list test also runs on 2 ranks
+add_executable(pairListTests
+    ${CMAKE_CURRENT_LIST_DIR}/liggghtsRun.cpp
+    ${CMAKE_CURRENT_LIST_DIR}/pairListTest.cpp)
+target_include_directories(pairListTests PRIVATE ${LIGGGHTS_INCLUDE_DIR})
+target_link_libraries(pairListTests PRIVATE liggghtsColloid GTest::gtest)
+
+foreach(name trimKeepsHistoryWithItsPair listHoldsEveryPairInRange contactHistorySurvivesTrim)
+    add_test(NAME dem.pairList.${name} COMMAND pairListTests --gtest_filter=pairList.${name})
+    set_tests_properties(dem.pairList.${name} PROPERTIES
+        TIMEOUT 300 LABELS "dem;agglomeration"
+        PASS_REGULAR_EXPRESSION "\\[  PASSED  \\] 1 test\\."
+        WORKING_DIRECTORY ${CMAKE_CURRENT_BINARY_DIR})
+endforeach()
+
+# both ranks check their own list (the check's counts are summed over the
+# ranks, so both pass or fail together)
+add_test(NAME dem.pairList.listHoldsEveryPairInRange.2ranks
+    COMMAND ${MPIEXEC_EXECUTABLE} -np 2 $<TARGET_FILE:pairListTests> --gtest_filter=pairList.listHoldsEveryPairInRange --gtest_color=no)
+set_tests_properties(dem.pairList.listHoldsEveryPairInRange.2ranks PROPERTIES
+    TIMEOUT 300 LABELS "dem;agglomeration" PROCESSORS 2
+    PASS_REGULAR_EXPRESSION "\\[  PASSED  \\] 1 test\\."
+    FAIL_REGULAR_EXPRESSION "FAILED"
+    WORKING_DIRECTORY ${CMAKE_CURRENT_BINARY_DIR})
