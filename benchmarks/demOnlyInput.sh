@@ -27,7 +27,8 @@
 #                                    log's last loop in ns per particle-step: pair,
 #                                    neighbour lists, communication, the rest
 #                                    (fixes, integration, output); and the
-#                                    pairs listed per particle (half list)
+#                                    pairs listed per particle (half list; with
+#                                    colloid models, after the plugin's trim)
 
 # The case's couplingProperties with its #include and $ expanded, read
 # once per input

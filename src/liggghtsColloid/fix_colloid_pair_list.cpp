@@ -11,6 +11,7 @@
 #include "colloid_append_fix.h"
 #include "colloid_neighbour_trim.h"
 #include "comm.h"
+#include "error.h"
 #include "force.h"
 #include "neigh_list.h"
 #include "neighbor.h"
@@ -40,7 +41,7 @@ FixColloidPairList::FixColloidPairList(LAMMPS *lmp, int narg, char **arg)
   attached_(false),
   active_(false),
   reported_(false),
-  listed_(0.0)
+  warned_(false)
 {
     scalar_flag = 1;
     global_freq = 1;
@@ -53,11 +54,30 @@ int FixColloidPairList::setmask()
 }
 
 // Modify::init follows the pair style's: a run trims only if its pair
-// style attached the fix
+// style attached the fix, and only if LIGGGHTS checks the displacements
+// at every step (or rebuilds at every step): with "neigh_modify delay 10"
+// (LIGGGHTS' default) or "every 5" a particle can move more than half the
+// skin before the rebuild, and the trimmed list would lose forces that
+// the untrimmed one's margin (f - 1)(Ri + Rj) - range still covers
 void FixColloidPairList::init()
 {
     active_ = attached_;
     attached_ = false;
+    if (!active_) return;
+    const bool everyStep = neighbor->every == 1 && neighbor->delay <= 1 && !neighbor->build_once;
+    if (everyStep) return;
+    active_ = false;
+    if (comm->me == 0 && !warned_)
+    {
+        char msg[512];
+        snprintf(msg, sizeof(msg),
+            "colloid pair list: not trimmed to the colloid range (the pair loop walks pairs up "
+            "to twice it): neigh_modify delay %d every %d%s lets a particle move more than half "
+            "the skin before a rebuild; 'neigh_modify delay 0 every 1 check yes' trims it",
+            neighbor->delay, neighbor->every, neighbor->build_once ? " once yes" : "");
+        error->warning(FLERR, msg);
+    }
+    warned_ = true;
 }
 
 void FixColloidPairList::setup_pre_force(int)
@@ -96,7 +116,7 @@ void FixColloidPairList::trimIfBuilt()
         // the pair's gap is at most reach: |xi - xj| <= ri + rj + reach
         const int kept = Colloid::trimNeighbourRow(list->firstneigh[i],
             history ? history->firstneigh[i] : NULL,
-            history ? history->firstdouble[i] : NULL,
+            history && history->dnum > 0 ? history->firstdouble[i] : NULL,
             history ? history->dnum : 0, n,
             [&](int entry)
             {
@@ -109,7 +129,6 @@ void FixColloidPairList::trimIfBuilt()
         before += n;
         after += kept;
     }
-    listed_ = after;
 
     if (reported_) return;
     reported_ = true;
@@ -130,7 +149,10 @@ void FixColloidPairList::trimIfBuilt()
 
 double FixColloidPairList::compute_scalar()
 {
-    double all = 0.0;
-    MPI_Allreduce(&listed_, &all, 1, MPI_DOUBLE, MPI_SUM, world);
+    NeighList *list = force->pair ? force->pair->list : NULL;
+    double listed = 0.0, all = 0.0;
+    if (list)
+        for (int ii = 0; ii < list->inum; ii++) listed += list->numneigh[list->ilist[ii]];
+    MPI_Allreduce(&listed, &all, 1, MPI_DOUBLE, MPI_SUM, world);
     return all;
 }

@@ -12,19 +12,23 @@
    Hertz's at 2e5 particles (README, "cost against the particle count").
 
    What: at every step at which the list was built (Neighbor::ago == 0,
-   in pre_force, before the pair forces), each row keeps the neighbours
-   whose gap is at most
+   in pre_force, before the pair forces), each row keeps, of the
+   neighbours LIGGGHTS listed, those whose gap is at most
 
        reach + skin,   reach = max(range, skin/2),
 
    with their contact flags and history (colloid_neighbour_trim.h).  A
    pair farther apart at the build stays beyond the reach until the next
-   build: LIGGGHTS rebuilds before any atom has moved half the skin, so a
-   gap closes by at most the skin.  range is the largest outer cut-off of
-   the colloid terms that are on; skin/2 is the largest gap the contact
-   analysis may look at (colloid_contact_analysis.cpp, checkReach).  The
-   walls keep the full factor: their lists are the meshes' and primitive
-   walls' own.
+   build: with "neigh_modify delay 0 every 1 check yes" LIGGGHTS rebuilds
+   before any atom has moved half the skin, so a gap closes by at most the
+   skin (other settings: no trim, and a warning).  range is the largest
+   outer cut-off of the colloid terms that are on; skin/2 is the largest
+   gap the contact analysis may look at (colloid_contact_analysis.cpp,
+   checkReach).  LIGGGHTS copies this list for a compute that asks for a
+   granular list (compute contact/atom): such a compute sees the pairs
+   within a gap of reach only (the coupling's, 1 % of the radius, does).
+   The walls keep the full factor: their lists are the meshes' and
+   primitive walls' own.
 
    Who attaches it: the pair style's colloid cohesion model at every
    run's init (before Modify's), with the range.  A run whose pair style
@@ -32,8 +36,9 @@
    as LIGGGHTS built it.  Created by code (colloid_append_fix.h).
 
    Output: its global scalar, e.g. "thermo_style custom step
-   f_colloid_pair_list", is the number of pairs listed after the last
-   trim, all ranks (a pair across a processor boundary counts on both).
+   f_colloid_pair_list", is the number of entries of the pair list, all
+   ranks (a pair across a processor boundary counts on both).  The log
+   says, at the first trim of the LIGGGHTS instance, how many were kept.
 ------------------------------------------------------------------------- */
 
 #ifndef COLLOID_FIX_COLLOID_PAIR_LIST_H
@@ -70,7 +75,7 @@ private:
     bool attached_;     // attach() called since the last init
     bool active_;       // this run trims
     bool reported_;     // the log line was written
-    double listed_;     // pairs on this rank's list after the last trim
+    bool warned_;       // the warning of an untrimmed list was written
 };
 
 }

@@ -8,19 +8,23 @@
     listHoldsEveryPairInRange: 600 polydisperse spheres (radii 0.1-0.2 um)
         flying apart and into each other, colloid vdW, double layer and
         lubrication (range 0.05 um, skin 0.03 um), 400 steps of one step
-        each.  At every step every pair closer than the range is listed
+        each, in a closed box and in a periodic one.  At every step every pair closer than the range is listed
         (else its forces are lost), and at every step the list was built
         the list is exactly the pairs within max(range, skin/2) + skin,
         counted by brute force over the atoms of the rank (local and
         ghost).  Serial, and on 2 ranks (processors 2 1 1) by the ctest
         dem.pairList.listHoldsEveryPairInRange.2ranks.
+    untrimmedWithDelay: with "neigh_modify delay 10" the list is LIGGGHTS'
+        own (every pair within f (Ri + Rj) + skin).
     contactHistorySurvivesTrim: a sliding contact (tangential history) of
         two spheres with four resting spheres around the contact line at a
         gap of 0.1 um (listed by LIGGGHTS, beyond the kept gap 0.08 um and
         every force), the list rebuilt at every step: the pair's forces and
-        torques must be those of the same pair alone (within 1e-12
-        relative), which fails if the trim leaves the contact with a
-        dropped neighbour's history.
+        torques must be those of the same pair alone (within 1e-12, relative
+        where above 1 nN or nN um), which fails if the trim leaves the
+        contact with a dropped neighbour's history (checked by moving the
+        history values out of step: the lower spheres precede sphere 2 in
+        sphere 1's row).
 \*---------------------------------------------------------------------------*/
 #include "liggghtsRun.H"
 
@@ -176,41 +180,52 @@ TEST(pairList, trimKeepsHistoryWithItsPair)
 }
 
 
-TEST(pairList, listHoldsEveryPairInRange)
+namespace
 {
-    LiggghtsRun run;
-    std::ostringstream in;
-    in.precision(17);
-    in << "processors * 1 1\n" << colloidPairStyle("f f f", "colloid/vdw/dl/lub")
-       << "fix integrate all nve/sphere\n";
 
-    // 600 spheres in [-2.4, 2.4]^3 at least 2 nm apart, velocities up to
-    // 2 m/s per component: they stay inside the box over 400 steps (at
-    // most 0.14 um) and rebuild the lists every 10-40 steps
+// 600 spheres (radii 0.1-0.2 um) at least 2 nm apart, velocities up to 2
+// m/s per component, in the box [-3, 3]^3 (LiggghtsRun::header(3)):
+// periodic, anywhere in it (gaps by the nearest image); else in [-2.4,
+// 2.4]^3, where they stay over 400 steps (at most 0.14 um).  Input lines.
+std::string randomSuspension(bool periodic)
+{
     std::mt19937 random(20261206);
     std::uniform_real_distribution<double> unit(0.0, 1.0);
+    const double half = periodic ? 3.0 : 2.4;
+    auto image = [&](double d) { return periodic ? d - 6.0*std::round(d/6.0) : d; };
     std::vector<double> xs, rs;
     while (rs.size() < 600)
     {
         const double r = 0.1 + 0.1*unit(random);
-        const double p[3] = {-2.4 + 4.8*unit(random), -2.4 + 4.8*unit(random), -2.4 + 4.8*unit(random)};
+        const double p[3] = {half*(2*unit(random) - 1), half*(2*unit(random) - 1), half*(2*unit(random) - 1)};
         bool clear = true;
         for (std::size_t k = 0; k < rs.size() && clear; k++)
         {
-            const double dx = p[0] - xs[3*k], dy = p[1] - xs[3*k + 1], dz = p[2] - xs[3*k + 2];
+            const double dx = image(p[0] - xs[3*k]), dy = image(p[1] - xs[3*k + 1]), dz = image(p[2] - xs[3*k + 2]);
             clear = std::sqrt(dx*dx + dy*dy + dz*dz) > r + rs[k] + 0.002;
         }
         if (!clear) continue;
         xs.insert(xs.end(), p, p + 3);
         rs.push_back(r);
     }
+    std::ostringstream in;
+    in.precision(17);
     for (std::size_t k = 0; k < rs.size(); k++)
         in << "create_atoms 1 single " << xs[3*k] << ' ' << xs[3*k + 1] << ' ' << xs[3*k + 2] << " units box\n";
     for (std::size_t k = 0; k < rs.size(); k++)
         in << "set atom " << k + 1 << " diameter " << 2*rs[k] << " density 2.5"
            << " vx " << 4*unit(random) - 2 << " vy " << 4*unit(random) - 2 << " vz " << 4*unit(random) - 2 << "\n";
-    in << "run 0\n";
-    run.commands(in.str());
+    return in.str();
+}
+
+// The suspension run 400 steps of one step each, its list checked at
+// every step
+void followList(const std::string& boundary)
+{
+    SCOPED_TRACE("boundary " + boundary);
+    LiggghtsRun run;
+    run.commands("processors * 1 1\n" + colloidPairStyle(boundary, "colloid/vdw/dl/lub")
+        + "fix integrate all nve/sphere\n" + randomSuspension(boundary[0] == 'p') + "run 0\n");
     ASSERT_EQ(run.nAtoms(), 600);
 
     int builds = 0;
@@ -227,14 +242,41 @@ TEST(pairList, listHoldsEveryPairInRange)
         listedAtBuilds += c.listed;
         trimmedAtBuilds += c.liggghtsReach - c.listed;
     }
-    std::cout << builds << " builds; at the builds " << listedAtBuilds << " pairs listed, "
-              << trimmedAtBuilds << " trimmed" << std::endl;
+    std::cout << boundary << ": " << builds << " builds; at the builds " << listedAtBuilds
+              << " pairs listed, " << trimmedAtBuilds << " trimmed" << std::endl;
+    ASSERT_EQ(run.nAtoms(), 600);
     // the scene tests something: lists built, pairs kept and pairs trimmed
     EXPECT_GE(builds, 5);
     EXPECT_GT(listedAtBuilds, 20*builds);
     EXPECT_GT(trimmedAtBuilds, 20*builds);
-    // the fix's count is the list's
-    EXPECT_EQ(run.evaluate("f_colloid_pair_list"), checkList(run.instance()).listed);
+    // the fix's count is the list's entries (a pair of two ranks on both)
+    LAMMPS_NS::NeighList* list = run.instance()->force->pair->list;
+    long entries = 0, all = 0;
+    for (int ii = 0; ii < list->inum; ii++) entries += list->numneigh[list->ilist[ii]];
+    MPI_Allreduce(&entries, &all, 1, MPI_LONG, MPI_SUM, MPI_COMM_WORLD);
+    EXPECT_EQ(run.evaluate("f_colloid_pair_list"), all);
+}
+
+} // namespace
+
+
+TEST(pairList, listHoldsEveryPairInRange)
+{
+    followList("f f f");
+    followList("p p p");
+}
+
+
+// LIGGGHTS' default delay of 10 steps lets a particle move more than half
+// the skin before a rebuild: the list is left as LIGGGHTS built it
+TEST(pairList, untrimmedWithDelay)
+{
+    LiggghtsRun run;
+    run.commands(colloidPairStyle("f f f", "colloid/vdw/dl/lub") + "neigh_modify delay 10\n"
+        + "fix integrate all nve/sphere\n" + randomSuspension(false) + "run 0\n");
+    const ListCheck c = checkList(run.instance());
+    EXPECT_GT(c.liggghtsReach, c.expected);
+    EXPECT_EQ(c.listed, c.liggghtsReach);
 }
 
 
