@@ -6,14 +6,10 @@ add_executable(brownianTests
 target_include_directories(brownianTests PRIVATE ${LIGGGHTS_INCLUDE_DIR})
 target_link_libraries(brownianTests PRIVATE liggghtsColloid GTest::gtest GTest::gtest_main)
 
-foreach(name meanSquareDisplacement equipartition reproducible lubricatedPairDiffusion
-        lubricatedWallDiffusion)
-    add_test(NAME dem.brownian.${name} COMMAND brownianTests --gtest_filter=brownian.${name})
-    set_tests_properties(dem.brownian.${name} PROPERTIES
-        TIMEOUT 300 LABELS "dem;agglomeration"
-        PASS_REGULAR_EXPRESSION "\\[  PASSED  \\] 1 test\\."
-        WORKING_DIRECTORY ${CMAKE_CURRENT_BINARY_DIR})
-endforeach()
+dem_gtest_cases(brownianTests dem.brownian. brownian
+    TIMEOUT 300 LABELS "dem;agglomeration"
+    CASES meanSquareDisplacement equipartition reproducible lubricatedPairDiffusion
+          lubricatedWallDiffusion)
 
 # Lubrication noise across a processor boundary: the stock liggghts with
 # the plugin preloaded, serial against 2 ranks (runBrownianParallelTest.sh)

@@ -12,17 +12,12 @@ add_executable(demExtremeTests
 target_include_directories(demExtremeTests PRIVATE ${LIGGGHTS_INCLUDE_DIR})
 target_link_libraries(demExtremeTests PRIVATE liggghtsColloid GTest::gtest GTest::gtest_main)
 
-foreach(name
-        extremeSmallParticles extremeLargeHamaker extremeTinyGap
-        extremeTinyGapLubricated extremeOverlapping extremeHighSalt
-        extremeWallImpact extremeWallImpactLubricated
-        extremeLowSaltForce extremeHighSaltForce)
-    add_test(NAME dem.${name} COMMAND demExtremeTests --gtest_filter=*.${name})
-    set_tests_properties(dem.${name} PROPERTIES
-        TIMEOUT 60 LABELS dem
-        PASS_REGULAR_EXPRESSION "\\[  PASSED  \\] 1 test\\."
-        WORKING_DIRECTORY ${CMAKE_CURRENT_BINARY_DIR})
-endforeach()
+dem_gtest_cases(demExtremeTests dem. *
+    TIMEOUT 60 LABELS dem
+    CASES extremeSmallParticles extremeLargeHamaker extremeTinyGap
+          extremeTinyGapLubricated extremeOverlapping extremeHighSalt
+          extremeWallImpact extremeWallImpactLubricated
+          extremeLowSaltForce extremeHighSaltForce)
 
 find_program(LIGGGHTS_EXECUTABLE liggghts)
 if(LIGGGHTS_EXECUTABLE)
@@ -36,31 +31,21 @@ if(LIGGGHTS_EXECUTABLE)
     target_link_libraries(demProcessTests PRIVATE GTest::gtest GTest::gtest_main)
     add_dependencies(demProcessTests liggghtsColloid)
 
-    foreach(name
-            badInputValidScriptRuns badInputNegativeStiffness
-            badInputRestitutionAboveOne badInputZetaAbove300mV
-            badInputHamakerTooLarge badInputNoSalt badInputMissingRestitution
-            badInputMisspeltOptionalProperty
-            startupLimitSmallParticles startupLimitSmallParticlesOverride
-            startupLimitLargeHamaker startupLimitStiffWall
-            startupLimitSoftContact startupLimitSoftWall
-            startupLimitStiffTangential)
-        add_test(NAME dem.${name} COMMAND demProcessTests --gtest_filter=*.${name})
-        set_tests_properties(dem.${name} PROPERTIES
-            TIMEOUT 60 LABELS dem
-            PASS_REGULAR_EXPRESSION "\\[  PASSED  \\] 1 test\\."
-            WORKING_DIRECTORY ${CMAKE_CURRENT_BINARY_DIR})
-    endforeach()
+    dem_gtest_cases(demProcessTests dem. *
+        TIMEOUT 60 LABELS dem
+        CASES badInputValidScriptRuns badInputNegativeStiffness
+              badInputRestitutionAboveOne badInputZetaAbove300mV
+              badInputHamakerTooLarge badInputNoSalt badInputMissingRestitution
+              badInputMisspeltOptionalProperty
+              startupLimitSmallParticles startupLimitSmallParticlesOverride
+              startupLimitLargeHamaker startupLimitStiffWall
+              startupLimitSoftContact startupLimitSoftWall
+              startupLimitStiffTangential)
     # the limits of the stiff terms (label stiff too)
-    foreach(name
-            startupLimitDoubleLayerSpring startupLimitViscousFix
-            startupLimitDiRenzoDiMaioWall)
-        add_test(NAME dem.${name} COMMAND demProcessTests --gtest_filter=*.${name})
-        set_tests_properties(dem.${name} PROPERTIES
-            TIMEOUT 60 LABELS "dem;stiff"
-            PASS_REGULAR_EXPRESSION "\\[  PASSED  \\] 1 test\\."
-            WORKING_DIRECTORY ${CMAKE_CURRENT_BINARY_DIR})
-    endforeach()
+    dem_gtest_cases(demProcessTests dem. *
+        TIMEOUT 60 LABELS "dem;stiff"
+        CASES startupLimitDoubleLayerSpring startupLimitViscousFix
+              startupLimitDiRenzoDiMaioWall)
 else()
     message(WARNING "liggghts program not found: the bad-input and start-up limit tests are not built")
 endif()

@@ -7,10 +7,6 @@ add_executable(obliqueImpactTests
 target_include_directories(obliqueImpactTests PRIVATE ${LIGGGHTS_INCLUDE_DIR})
 target_link_libraries(obliqueImpactTests PRIVATE liggghtsColloid GTest::gtest GTest::gtest_main)
 
-foreach(name obliqueImpactWaltonBraun obliqueImpactDiRenzoDiMaio)
-    add_test(NAME dem.${name} COMMAND obliqueImpactTests --gtest_filter=*.${name})
-    set_tests_properties(dem.${name} PROPERTIES
-        TIMEOUT 120 LABELS "dem;stiff"
-        PASS_REGULAR_EXPRESSION "\\[  PASSED  \\] 1 test\\."
-        WORKING_DIRECTORY ${CMAKE_CURRENT_BINARY_DIR})
-endforeach()
+dem_gtest_cases(obliqueImpactTests dem. *
+    TIMEOUT 120 LABELS "dem;stiff"
+    CASES obliqueImpactWaltonBraun obliqueImpactDiRenzoDiMaio)

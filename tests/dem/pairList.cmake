@@ -7,14 +7,10 @@ add_executable(pairListTests
 target_include_directories(pairListTests PRIVATE ${LIGGGHTS_INCLUDE_DIR})
 target_link_libraries(pairListTests PRIVATE liggghtsColloid GTest::gtest)
 
-foreach(name trimKeepsHistoryWithItsPair listHoldsEveryPairInRange untrimmedWithDelay
-        contactHistorySurvivesTrim)
-    add_test(NAME dem.pairList.${name} COMMAND pairListTests --gtest_filter=pairList.${name})
-    set_tests_properties(dem.pairList.${name} PROPERTIES
-        TIMEOUT 300 LABELS "dem;agglomeration"
-        PASS_REGULAR_EXPRESSION "\\[  PASSED  \\] 1 test\\."
-        WORKING_DIRECTORY ${CMAKE_CURRENT_BINARY_DIR})
-endforeach()
+dem_gtest_cases(pairListTests dem.pairList. pairList
+    TIMEOUT 300 LABELS "dem;agglomeration"
+    CASES trimKeepsHistoryWithItsPair listHoldsEveryPairInRange untrimmedWithDelay
+          contactHistorySurvivesTrim)
 
 # both ranks check their own list (the check's counts are summed over the
 # ranks, so both pass or fail together); passed only if mpiexec and both

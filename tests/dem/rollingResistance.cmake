@@ -7,10 +7,6 @@ add_executable(rollingResistanceTests
 target_include_directories(rollingResistanceTests PRIVATE ${LIGGGHTS_INCLUDE_DIR})
 target_link_libraries(rollingResistanceTests PRIVATE liggghtsColloid GTest::gtest GTest::gtest_main)
 
-foreach(name rollingResistanceHoldsAdheredSphere rollingResistanceSlowsRollingSphere)
-    add_test(NAME dem.${name} COMMAND rollingResistanceTests --gtest_filter=*.${name})
-    set_tests_properties(dem.${name} PROPERTIES
-        TIMEOUT 60 LABELS "dem;filtration"
-        PASS_REGULAR_EXPRESSION "\\[  PASSED  \\] 1 test\\."
-        WORKING_DIRECTORY ${CMAKE_CURRENT_BINARY_DIR})
-endforeach()
+dem_gtest_cases(rollingResistanceTests dem. *
+    TIMEOUT 60 LABELS "dem;filtration"
+    CASES rollingResistanceHoldsAdheredSphere rollingResistanceSlowsRollingSphere)

@@ -7,10 +7,6 @@ add_executable(tangentialSpringTests
 target_include_directories(tangentialSpringTests PRIVATE ${LIGGGHTS_INCLUDE_DIR})
 target_link_libraries(tangentialSpringTests PRIVATE liggghtsColloid GTest::gtest GTest::gtest_main)
 
-foreach(name tangentialSpringWaltonBraun tangentialSpringDiRenzoDiMaio)
-    add_test(NAME dem.${name} COMMAND tangentialSpringTests --gtest_filter=*.${name})
-    set_tests_properties(dem.${name} PROPERTIES
-        TIMEOUT 60 LABELS "dem;stiff"
-        PASS_REGULAR_EXPRESSION "\\[  PASSED  \\] 1 test\\."
-        WORKING_DIRECTORY ${CMAKE_CURRENT_BINARY_DIR})
-endforeach()
+dem_gtest_cases(tangentialSpringTests dem. *
+    TIMEOUT 60 LABELS "dem;stiff"
+    CASES tangentialSpringWaltonBraun tangentialSpringDiRenzoDiMaio)
