@@ -5,7 +5,6 @@
 #include "fix_colloid_pair_list.h"
 
 #include <algorithm>
-#include <cmath>
 #include <mpi.h>
 #include "atom.h"
 #include "colloid_append_fix.h"
