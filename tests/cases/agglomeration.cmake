@@ -127,6 +127,11 @@ add_study_report_test(studyWhere testStudyWhere.py 30)
 # folder is not used)
 add_study_report_test(pairGaps testPairGaps.py 60)
 
+# agglomeration.studyVariants: the study report's comparison of a case with
+# its numerical variant (results/variants.md) on hand-built study folders
+# (testStudyVariants.py, figures by hand)
+add_study_report_test(studyVariants testStudyVariants.py 30)
+
 # agglomeration.studyCost: the run time and rate the study's report gives
 # a resumed run: its parts' logs summed (testStudyCost.py, figures by hand)
 add_study_report_test(studyCost testStudyCost.py 30)

@@ -22,6 +22,11 @@ closest of them, and how many lie within 5, 10, 20 and 50 nm: the pairs
 the shear has brought together and the double layer holds apart, which
 the contact counts do not show.
 
+A case beside its numerical variant (the same case name with a suffix of
+NUMERICAL_VARIANTS, both in the study: results/variants.md): the contacts
+and agglomerates of the two, and how many agglomerates are the same
+particles (write_variants).
+
 The counts of each write are kept in the case
 (postProcessing/closePairs/closePairs.csv) and not computed again.
 
@@ -189,12 +194,13 @@ def group_agglomerated(case, cloud):
     return members, {k: find(k) for k in members}, bonds
 
 
-def agglomerates(case):
+def agglomerates(case, write=None):
     """(write time [s], [(ids, centre [m], die part)]) at the case's last
-    write: the particles with agglomerateSize > 1 grouped as the run's
-    analysis grouped them (group_agglomerated)"""
+    write (or the write time folder write): the particles with
+    agglomerateSize > 1 grouped as the run's analysis grouped them
+    (group_agglomerated)"""
     g = geometry(case)
-    last = particleCloud.latest(case)
+    last = write or particleCloud.latest(case)
     cloud = particleCloud.read(last)
     members, root, bonds = group_agglomerated(case, cloud)
 
@@ -376,6 +382,62 @@ def write_where(cases, resultsDir):
                                 os.path.join(resultsDir, "where.png")))
 
 
+# suffixes of the study's numerical variants (Allstudy): the same case
+# at other numerical settings, compared with it in results/variants.md
+NUMERICAL_VARIANTS = ("SoftContacts",)
+
+
+def write_variants(cases, resultsDir):
+    """results/variants.md: each case run at a numerical variant beside
+    the same case without it (both in the study), at the latest write time
+    the two have in common: their pair contacts and agglomerates there; of
+    the case's agglomerates, how many are the same particles in the
+    variant (identical members) and how many have two or more members in
+    one of the variant's; the largest difference of the pair contact
+    counts over the analysis times they have in common up to it; the run
+    times (whole runs).  Nothing is written when no case has its variant."""
+    by_name = {os.path.basename(c): c for c in cases}
+    rows = ["| case | variant | write time compared [µs] | pair contacts (case / variant) | "
+            "largest difference of pair contacts at a common time | agglomerates (case / variant) | "
+            "the case's found as the same particles | the case's with two members in one of the "
+            "variant's | run time [s] (case / variant) |",
+            "|---|---|---|---|---|---|---|---|---|"]
+
+    def ns(t):
+        return int(round(t*1e9))
+
+    for name, case in sorted(by_name.items()):
+        for suffix in NUMERICAL_VARIANTS:
+            variant = by_name.get(name + suffix)
+            if variant is None:
+                continue
+            writes = [{ns(particleCloud.time(w)): w for w in particleCloud.write_times(c)}
+                      for c in (case, variant)]
+            both = sorted(set(writes[0]) & set(writes[1]))
+            counts = [{ns(r["time"]): r["pairContacts"] for r in contactAnalysis.read(c)["contacts"]}
+                      for c in (case, variant)]
+            common = [t for t in sorted(set(counts[0]) & set(counts[1])) if both and t <= both[-1]]
+            if not common:
+                continue
+            write, at = both[-1], common[-1]
+            largest = max(abs(counts[0][t] - counts[1][t]) for t in common)
+            (_, gc), (_, gv) = agglomerates(case, writes[0][write]), agglomerates(variant, writes[1][write])
+            sets_c = [frozenset(ids) for ids, _, _ in gc]
+            sets_v = [frozenset(ids) for ids, _, _ in gv]
+            same = len(set(sets_c) & set(sets_v))
+            sharing = sum(1 for a in sets_c if any(len(a & b) >= 2 for b in sets_v))
+            rows.append("| %s | %s | %.4g | %d / %d | %d | %d / %d | %d | %d | %.0f / %.0f |" % (
+                name, suffix, write*1e-3, counts[0][at], counts[1][at], largest,
+                len(gc), len(gv), same, sharing, cost(case)[1], cost(variant)[1]))
+    if len(rows) == 2:
+        return
+    path = os.path.join(resultsDir, "variants.md")
+    with open(path, "w") as f:
+        f.write("\n".join(rows) + "\n")
+    print("\n".join(rows))
+    print("written: %s" % path)
+
+
 def main(studyDir, resultsDir):
     cases = sorted(d for d in glob.glob(os.path.join(studyDir, "*"))
                    if os.path.isdir(os.path.join(d, "postProcessing", "contactAnalysis")))
@@ -427,6 +489,7 @@ def main(studyDir, resultsDir):
                                 os.path.join(resultsDir, "contacts.png")))
     write_where(cases, resultsDir)
     write_gaps(cases, resultsDir)
+    write_variants(cases, resultsDir)
 
 
 if __name__ == "__main__":

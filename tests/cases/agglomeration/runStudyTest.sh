@@ -1,7 +1,9 @@
 #!/bin/bash
 # The agglomeration study's driver (tutorials/slotCoater/Allstudy) on a copy
 # of the tutorial: one case (isoelectricBrownianSlowWeb) for two coupling
-# steps at the study's size, then the report.  Asserted: the case holds the
+# steps at the study's size, and its numerical variant
+# (isoelectricBrownianSlowWebSoftContacts) for one, then the report.
+# Asserted: the case holds the
 # study's settings (span 5 um, zeta 0, DEM step 4e-10 s, 25 steps per
 # coupling step, Brownian motion on, a write every 5 us) and the flow
 # change's (web 0.1 m/s; the steady flow's inflow half the full speed's,
@@ -13,7 +15,13 @@
 # -resume stops naming the folder, and the report writes its tables (a row
 # for the case in summary.md, and in where.md: no agglomerate after two
 # steps from a fill 100 nm apart; in gaps.md: no pair within 50 nm) and
-# its plots.
+# its plots.  The variant: contactStiffness 0.25 N/m, written for the DEM
+# as K1 250 nN/um, K_T0 2/7 of it and the walls' E 1.25e4 (1e3 Pa: 1e8 Pa
+# as K1^3/2), DEM
+# step 8e-10 s, fluid step 2e-8 s, a write every 250 fluid steps (5 us);
+# the DEM's printed contact duration and tangential half-period of two
+# particles twice the case's (K1^-1/2, within 1e-5); the report's variants.md row for the pair;
+# SoftContacts before SlowWeb refused.
 #
 # usage: runStudyTest.sh workDir
 set -e
@@ -44,6 +52,12 @@ then
     fail "isoelectricSlowWebBrownian was accepted"
 fi
 grep -q "unknown case 'isoelectricSlowWebBrownian'" order.out || { cat order.out; fail "message"; }
+# the numerical variant's suffix goes last
+if ./Allstudy -endTime 2e-8 isoelectricSoftContactsSlowWeb > order.out 2>&1
+then
+    fail "isoelectricSoftContactsSlowWeb was accepted"
+fi
+grep -q "unknown case 'isoelectricSoftContactsSlowWeb'" order.out || { cat order.out; fail "message"; }
 [ ! -d study ] || fail "a case was set up before the unknown one was refused"
 
 ./Allstudy -endTime 2e-8 isoelectricBrownianSlowWeb > allstudy.out 2>&1 \
@@ -68,6 +82,32 @@ n=$(awk '/^Particles: present/ { sub(",", "", $3); print $3 }' $case/log.colloid
 echo "particles present at the end: $n"
 awk -v n="$n" 'BEGIN { exit !(n >= 1.9e5 && n <= 2.1e5) }' || fail "$n particles, not the 5 um span's 2.0e5"
 
+# the numerical variant: softer contacts at twice the DEM step
+./Allstudy -endTime 2e-8 isoelectricBrownianSlowWebSoftContacts > soft.out 2>&1 \
+    || { cat soft.out; tail -20 study/isoelectricBrownianSlowWebSoftContacts.log; fail "Allstudy soft"; }
+soft=study/isoelectricBrownianSlowWebSoftContacts
+[ "$(value $soft/system/slotCoaterParameters contactStiffness)" = 0.25 ] || fail "contactStiffness"
+[ "$(value $soft/constant/couplingProperties timeStep)" = 8e-10 ] || fail "soft DEM timeStep"
+[ "$(value $soft/system/controlDict deltaT)" = 2e-8 ] || fail "soft deltaT"
+[ "$(value $soft/system/controlDict writeInterval)" = 250 ] || fail "soft writeInterval"
+[ "$(value $soft/system/slotCoaterParameters webSpeed)" = 0.1 ] || fail "soft webSpeed"
+grep -q "^Brownian motion: 293.15 K, seed 1" $soft/log.colloidDEMFoam || fail "soft: no Brownian motion"
+grep -q "^variable contactStiffness equal 250$" $soft/DEM/slotCoater.liggghts || fail "K1 for the DEM"
+grep -q "^variable tangentialStiffness equal 71.42857143$" $soft/DEM/slotCoater.liggghts || fail "K_T0 for the DEM"
+grep -q "^variable wallYoungsModulus equal 12500$" $soft/DEM/slotCoater.liggghts || fail "E for the DEM"
+grep -q "^variable contactStiffness equal 1000$" $case/DEM/slotCoater.liggghts || fail "the case's K1"
+# the printed limits of the DEM's log: normal and tangential, K1^-1/2
+limitOf() { sed -n "s/.*$2: \([^ ]*\) s.*/\1/p" "$1" | head -1; }
+for limit in "Walton-Braun contact duration of two of the lightest particles" \
+             "tangential half-period of two of the lightest particles"
+do
+    d=$(limitOf $case/log.liggghts "$limit"); ds=$(limitOf $soft/log.liggghts "$limit")
+    echo "$limit: $d s, soft $ds s"
+    awk -v d="$d" -v s="$ds" 'BEGIN { exit !(d > 0 && s > 0 && (s/d - 2 < 1e-5) && (2 - s/d < 1e-5)) }' \
+        || fail "soft $limit $ds s, not twice $d s"
+done
+[ -f $soft/2e-08/uniform/colloidCoupling ] || fail "the soft run did not reach 2e-08"
+
 if ./Allstudy -endTime 2e-8 isoelectricBrownianSlowWeb > again.out 2>&1
 then
     fail "a second set-up of the case did not stop"
@@ -83,4 +123,7 @@ grep -q "^| isoelectricBrownianSlowWeb | 0.02 | none |" results/where.md || { ca
 grep -q "^| isoelectricBrownianSlowWeb | 0.02 | none | 0 | 0 | 0 | 0 |" results/gaps.md \
     || { cat results/gaps.md; fail "gaps row"; }
 [ -s results/gaps.png ] || fail "no gaps.png"
+# the case beside its variant: no contact and no agglomerate in either
+grep -q "^| isoelectricBrownianSlowWeb | SoftContacts | 0.02 | 0 / 0 | 0 | 0 / 0 | 0 | 0 |" results/variants.md \
+    || { cat results/variants.md; fail "variants row"; }
 echo PASS

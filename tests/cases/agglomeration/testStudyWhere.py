@@ -43,34 +43,15 @@ import os
 import shutil
 import sys
 
+import handBuiltCloud
+
 R = 0.15e-6
 
 
-def write_list(path, rows, fmt):
-    with open(path, "w") as f:
-        f.write("FoamFile { version 2.0; format ascii; class Cloud; object x; }\n")
-        f.write("%d\n(\n" % len(rows))
-        for r in rows:
-            f.write(fmt % r + "\n")
-        f.write(")\n")
-
-
 def write_cloud(time_dir, parts, radius):
-    """The particle cloud of a write time: parts (id, x, y, z,
-    agglomerateSize[, agglomerateId]) [m], radius R but those of the
-    radius dict"""
-    cloud = os.path.join(time_dir, "lagrangian", "particles")
-    os.makedirs(cloud)
-    write_list(os.path.join(cloud, "positions"), [(p[1], p[2], p[3], 0) for p in parts],
-               "(%.15g %.15g %.15g) %d")
-    write_list(os.path.join(cloud, "origId"), [(p[0],) for p in parts], "%d")
-    write_list(os.path.join(cloud, "U"), [(0, 0, 0)]*len(parts), "(%g %g %g)")
-    write_list(os.path.join(cloud, "d"), [(2*radius.get(p[0], R),) for p in parts], "%.15g")
-    for name in ("nContacts", "touchingParticle", "touchingWall"):
-        write_list(os.path.join(cloud, name), [(0,)]*len(parts), "%d")
-    write_list(os.path.join(cloud, "agglomerateSize"), [(p[4],) for p in parts], "%d")
-    if all(len(p) > 5 for p in parts):
-        write_list(os.path.join(cloud, "agglomerateId"), [(p[5],) for p in parts], "%d")
+    """The particle cloud of a write time (handBuiltCloud.py) with this
+    test's radius R"""
+    handBuiltCloud.write_cloud(time_dir, parts, radius, R)
 
 
 def main():
@@ -80,12 +61,7 @@ def main():
     import studyReport
 
     shutil.rmtree(work, ignore_errors=True)
-    os.makedirs(os.path.join(work, "system"))
-    shutil.copy(os.path.join(root, "tutorials", "slotCoater", "system", "slotCoaterParameters"),
-                os.path.join(work, "system"))
-    os.makedirs(os.path.join(work, "constant"))
-    with open(os.path.join(work, "constant", "couplingProperties"), "w") as f:
-        f.write("contactAnalysis\n{\n    agglomerateGap 0.01;\n}\n")
+    handBuiltCloud.case_folder(root, work)
     span = studyReport.geometry(work)["span"]
     u = 1e-6
     # (id, x, y, z, agglomerateSize)
