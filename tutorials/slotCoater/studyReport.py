@@ -390,17 +390,21 @@ NUMERICAL_VARIANTS = ("SoftContacts",)
 def write_variants(cases, resultsDir):
     """results/variants.md: each case run at a numerical variant beside
     the same case without it (both in the study), at the latest write time
-    the two have in common: their pair contacts and agglomerates there; of
+    the two have in common: their pair contacts (there, or at the last
+    analysis time before it the two share, said so) and agglomerates; of
     the case's agglomerates, how many are the same particles in the
     variant (identical members) and how many have two or more members in
-    one of the variant's; the largest difference of the pair contact
-    counts over the analysis times they have in common up to it; the run
-    times (whole runs).  Nothing is written when no case has its variant."""
+    one of the variant's (the identical ones among them); the largest
+    difference of the pair contact counts over the analysis times they
+    have in common up to the write; the run times of the whole runs (with
+    their end times where these differ).  A pair without a write and an
+    analysis time in common is named and left out; nothing is written
+    when no case has its variant."""
     by_name = {os.path.basename(c): c for c in cases}
     rows = ["| case | variant | write time compared [µs] | pair contacts (case / variant) | "
             "largest difference of pair contacts at a common time | agglomerates (case / variant) | "
-            "the case's found as the same particles | the case's with two members in one of the "
-            "variant's | run time [s] (case / variant) |",
+            "the case's found as the same particles | the case's with two or more members in one of "
+            "the variant's | run time [s] (case / variant) |",
             "|---|---|---|---|---|---|---|---|---|"]
 
     def ns(t):
@@ -418,17 +422,28 @@ def write_variants(cases, resultsDir):
                       for c in (case, variant)]
             common = [t for t in sorted(set(counts[0]) & set(counts[1])) if both and t <= both[-1]]
             if not common:
+                print("%s and %s: no write time with analysis times in common, not compared"
+                      % (name, name + suffix))
                 continue
             write, at = both[-1], common[-1]
+            # the contacts at the write compared, or at the last analysis
+            # time before it that the two have in common (said so)
+            when = "%.4g" % (write*1e-3) if at == write else \
+                "%.4g (contacts at %.4g)" % (write*1e-3, at*1e-3)
             largest = max(abs(counts[0][t] - counts[1][t]) for t in common)
             (_, gc), (_, gv) = agglomerates(case, writes[0][write]), agglomerates(variant, writes[1][write])
             sets_c = [frozenset(ids) for ids, _, _ in gc]
             sets_v = [frozenset(ids) for ids, _, _ in gv]
             same = len(set(sets_c) & set(sets_v))
             sharing = sum(1 for a in sets_c if any(len(a & b) >= 2 for b in sets_v))
-            rows.append("| %s | %s | %.4g | %d / %d | %d | %d / %d | %d | %d | %.0f / %.0f |" % (
-                name, suffix, write*1e-3, counts[0][at], counts[1][at], largest,
-                len(gc), len(gv), same, sharing, cost(case)[1], cost(variant)[1]))
+            # whole runs' times: their end times too when they differ
+            (end_c, seconds_c, _), (end_v, seconds_v, _) = cost(case), cost(variant)
+            seconds = "%.0f / %.0f" % (seconds_c, seconds_v)
+            if abs(end_c - end_v) > 1e-12:
+                seconds += " (runs to %.4g / %.4g µs)" % (end_c*1e6, end_v*1e6)
+            rows.append("| %s | %s | %s | %d / %d | %d | %d / %d | %d | %d | %s |" % (
+                name, suffix, when, counts[0][at], counts[1][at], largest,
+                len(gc), len(gv), same, sharing, seconds))
     if len(rows) == 2:
         return
     path = os.path.join(resultsDir, "variants.md")

@@ -12,15 +12,17 @@ so 4 / 4 agglomerates, one of the same particles in both, (1 2), and
 three sharing two particles, (1 2), (3 4 5) and (7 8); (9 10) shares only
 one particle with (9 40): no pair in common.  Pair contacts
 (contacts.csv): the case 0, 3, 0, 6 at 0, 5, 7.5 and 10 us; the variant
-0, 2, 1, 6 at 0, 2.5, 5 and 10 us: the common times 0, 5 and 10 us, the
-largest difference 2 (at 5 us; 2.5 and 7.5 us are not common).
+0, 5, 1, 6 at 0, 2.5, 5 and 10 us: the common times 0, 5 and 10 us, the
+largest difference 2 (at 5 us; 2.5 and 7.5 us are not common: a union
+of the times, missing counts taken as 0 or carried forward, would give
+5 at 2.5 us).
 The variant has one more write, at 20 us (agglomerates (50 51), 9 pair
 contacts), which the comparison leaves out: the case has no write there
-(its analysis went on to 20 us, 8 contacts, as in a run stopped before
-its next write).
-Run times (log.colloidDEMFoam's ClockTime): 120 and 61 s.  Expected row
-(by hand):
-  | isoelectric | SoftContacts | 10 | 6 / 6 | 2 | 4 / 4 | 1 | 3 | 120 / 61 |
+(its analysis went on to 20 us, 12 contacts, as in a run stopped before
+its next write: a difference of 3 there, beyond the write compared).
+Run times (log.colloidDEMFoam's ClockTime): 120 and 61 s, of runs to 10
+and 20 us (their last writes).  Expected row (by hand):
+  | isoelectric | SoftContacts | 10 | 6 / 6 | 2 | 4 / 4 | 1 | 3 | 120 / 61 (runs to 10 / 20 µs) |
 and no row for stable; a study without any variant writes no variants.md.
 
 usage: testStudyVariants.py colloidFoamDir workDir
@@ -69,7 +71,8 @@ def write_case(root, case, writes, contacts, clock):
     with open(os.path.join(analysis, "agglomerateSizes.csv"), "w") as f:
         f.write("time,size,count\n")
     with open(os.path.join(case, "log.colloidDEMFoam"), "w") as f:
-        f.write("Time = 1e-05\n\nExecutionTime = %g s  ClockTime = %g s\n" % (clock - 1, clock))
+        f.write("Time = %s\n\nExecutionTime = %g s  ClockTime = %g s\n" % (max(writes, key=float),
+                                                                           clock - 1, clock))
 
 
 def main():
@@ -82,10 +85,10 @@ def main():
     study = os.path.join(work, "study")
     write_case(root, os.path.join(study, "isoelectric"),
                {"1e-05": [[1, 2], [3, 4, 5], [7, 8], [9, 10]]},
-               [(0, 0), (5e-6, 3), (7.5e-6, 0), (1e-5, 6), (2e-5, 8)], 120)
+               [(0, 0), (5e-6, 3), (7.5e-6, 0), (1e-5, 6), (2e-5, 12)], 120)
     write_case(root, os.path.join(study, "isoelectricSoftContacts"),
                {"1e-05": [[1, 2], [3, 4], [7, 8, 30], [9, 40]], "2e-05": [[50, 51]]},
-               [(0, 0), (2.5e-6, 2), (5e-6, 1), (1e-5, 6), (2e-5, 9)], 61)
+               [(0, 0), (2.5e-6, 5), (5e-6, 1), (1e-5, 6), (2e-5, 9)], 61)
     write_case(root, os.path.join(study, "stable"), {"1e-05": []}, [(0, 0), (1e-5, 0)], 100)
 
     ok = True
@@ -95,7 +98,8 @@ def main():
     studyReport.write_variants(cases, results)
     with open(os.path.join(results, "variants.md")) as f:
         rows = f.read().splitlines()[2:]
-    expected = ["| isoelectric | SoftContacts | 10 | 6 / 6 | 2 | 4 / 4 | 1 | 3 | 120 / 61 |"]
+    expected = ["| isoelectric | SoftContacts | 10 | 6 / 6 | 2 | 4 / 4 | 1 | 3 | "
+                "120 / 61 (runs to 10 / 20 µs) |"]
     good = rows == expected
     print("variants.md rows:\n  %s\nexpected:\n  %s\n%s" % ("\n  ".join(rows), expected[0],
                                                             "ok" if good else "FAIL"))
