@@ -34,6 +34,7 @@ Run time and rate: from the case's log.colloidDEMFoam, and the logs of
 the earlier parts of a resumed run (log.colloidDEMFoam.to<time>): the
 wall-clock 'ClockTime' of the parts summed, the particle-steps per second
 per rank over them (their last 'Timing' lines)."""
+import functools
 import glob
 import itertools
 import os
@@ -198,9 +199,15 @@ def agglomerates(case, write=None):
     """(write time [s], [(ids, centre [m], die part)]) at the case's last
     write (or the write time folder write): the particles with
     agglomerateSize > 1 grouped as the run's analysis grouped them
-    (group_agglomerated)"""
+    (group_agglomerated).  Found once per write in a report (where.md and
+    variants.md both ask for a case's last write); not to be changed by
+    the caller"""
+    return _agglomerates_at(case, write or particleCloud.latest(case))
+
+
+@functools.lru_cache(maxsize=None)
+def _agglomerates_at(case, last):
     g = geometry(case)
-    last = write or particleCloud.latest(case)
     cloud = particleCloud.read(last)
     members, root, bonds = group_agglomerated(case, cloud)
 
