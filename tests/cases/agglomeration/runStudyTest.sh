@@ -21,7 +21,8 @@
 # step 8e-10 s, fluid step 2e-8 s, a write every 250 fluid steps (5 us);
 # the DEM's printed contact duration and tangential half-period of two
 # particles twice the case's (K1^-1/2, within 1e-5); the report's variants.md row for the pair;
-# SoftContacts before SlowWeb refused.
+# SoftContacts before SlowWeb refused; a -resume of the variant to 4e-8 s
+# reaches it with the set-up's lines still in the study log.
 #
 # usage: runStudyTest.sh workDir
 set -e
@@ -126,4 +127,12 @@ grep -q "^| isoelectricBrownianSlowWeb | 0.02 | none | 0 | 0 | 0 | 0 |" results/
 # the case beside its variant: no contact and no agglomerate in either
 grep -q "^| isoelectricBrownianSlowWeb | SoftContacts | 0.02 | 0 / 0 | 0 | 0 / 0 | 0 | 0 |" results/variants.md \
     || { cat results/variants.md; fail "variants row"; }
+
+# a resume continues the run and keeps the study log of its set-up
+./Allstudy -resume -endTime 4e-8 isoelectricBrownianSlowWebSoftContacts > resume.out 2>&1 \
+    || { cat resume.out; tail -20 $soft.log; fail "Allstudy -resume"; }
+[ -f $soft/4e-08/uniform/colloidCoupling ] || fail "the resumed run did not reach 4e-08"
+grep -q "^Steady flow converged" $soft.log || { cat $soft.log; fail "the set-up's log was lost by the resume"; }
+grep -q "^==== .*Allstudy -resume, end time 4e-8 s" $soft.log || { cat $soft.log; fail "no line naming the resume"; }
+grep -q "^Resuming the particle run from time 2e-08" $soft.log || { cat $soft.log; fail "the resume's log"; }
 echo PASS
