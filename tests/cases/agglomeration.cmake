@@ -132,6 +132,13 @@ add_study_report_test(pairGaps testPairGaps.py 60)
 # (testStudyVariants.py, figures by hand)
 add_study_report_test(studyVariants testStudyVariants.py 30)
 
+# agglomeration.studyMilestones: the study report's contacts and
+# agglomerates at the seeds' times and on to the residence time
+# (results/milestones.md; a resumed analysis, times with round-off) and
+# its agglomerates by part of the die and size (where.md's first table),
+# on hand-built input (testStudyMilestones.py, figures by hand)
+add_study_report_test(studyMilestones testStudyMilestones.py 30)
+
 # agglomeration.studyCost: the run time and rate the study's report gives
 # a resumed run: its parts' logs summed (testStudyCost.py, figures by hand)
 add_study_report_test(studyCost testStudyCost.py 30)

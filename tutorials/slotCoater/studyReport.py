@@ -22,6 +22,13 @@ closest of them, and how many lie within 5, 10, 20 and 50 nm: the pairs
 the shear has brought together and the double layer holds apart, which
 the contact counts do not show.
 
+At the seeds' 60 and 110 us and on to the liquid's residence time
+(results/milestones.md, MILESTONES_US): each case's contacts, agglomerates
+and particles in them at each of these times its analysis reached, and at
+its last analysis, with the contacts formed and ended in between: the
+growth a single end-of-run row hides.  where.md begins with the
+agglomerates of each case counted by part of the die and size.
+
 A case beside its numerical variant (the same case name with a suffix of
 NUMERICAL_VARIANTS, both in the study: results/variants.md): the contacts
 and agglomerates of the two, and how many agglomerates are the same
@@ -340,8 +347,36 @@ def write_gaps(cases, resultsDir):
                                 os.path.join(resultsDir, "gaps.png")))
 
 
+# the parts of the die (part_of_die), upstream to downstream, and the
+# agglomerate sizes [particles] counted apart in where.md's first table
+DIE_PARTS = ("under the upstream lip", "below the slot", "under the downstream lip", "in the slot")
+SIZE_CLASSES = ((2, 2), (3, 3), (4, 4), (5, 9), (10, None))
+
+
+def where_counts(groups):
+    """Rows (part of the die, agglomerates, their count in each of
+    SIZE_CLASSES, particles) for each part holding one, and 'all'"""
+    def row(label, sizes):
+        classes = [sum(1 for n in sizes if n >= lo and (hi is None or n <= hi))
+                   for lo, hi in SIZE_CLASSES]
+        return (label, len(sizes), classes, sum(sizes))
+    out = []
+    for part in DIE_PARTS:
+        sizes = [len(ids) for ids, _, p in groups if p == part]
+        if sizes:
+            out.append(row(part, sizes))
+    out.append(row("all", [len(ids) for ids, _, _ in groups]))
+    return out
+
+
 def write_where(cases, resultsDir):
-    """results/where.md and where.png"""
+    """results/where.md (how many agglomerates of each size in each part
+    of the die, then each agglomerate) and where.png"""
+    labels = ["%d" % lo if hi == lo else ("%d-%d" % (lo, hi) if hi else "%d or more" % lo)
+              for lo, hi in SIZE_CLASSES]
+    counts = ["| case | write time [µs] | part of the die | agglomerates | %s | particles |" % (
+                  " | ".join("of %s" % k for k in labels)),
+              "|---|---|---|---|%s---|" % ("---|"*len(labels))]
     rows = ["| case | write time [µs] | particles (ids) | centre x, z [µm] | "
             "centre's height above the substrate [µm] | part of the die |",
             "|---|---|---|---|---|---|"]
@@ -350,6 +385,9 @@ def write_where(cases, resultsDir):
         name = os.path.basename(case)
         t, groups = agglomerates(case)
         found[name] = groups
+        for part, n, classes, particles in where_counts(groups):
+            counts.append("| %s | %.4g | %s | %d | %s | %d |" % (
+                name, t*1e6, part, n, " | ".join(str(c) for c in classes), particles))
         if not groups:
             rows.append("| %s | %.4g | none | | | |" % (name, t*1e6))
         for ids, c, part in groups:
@@ -357,8 +395,8 @@ def write_where(cases, resultsDir):
                 name, t*1e6, " ".join(str(i) for i in ids), c[0]*1e6, c[2]*1e6,
                 c[1]*1e6, part))
     with open(os.path.join(resultsDir, "where.md"), "w") as f:
-        f.write("\n".join(rows) + "\n")
-    print("\n".join(rows))
+        f.write("\n".join(counts) + "\n\n" + "\n".join(rows) + "\n")
+    print("\n".join(counts + [""] + rows))
 
     import matplotlib
     matplotlib.use("Agg")
@@ -387,6 +425,51 @@ def write_where(cases, resultsDir):
     fig.savefig(os.path.join(resultsDir, "where.png"), dpi=120)
     print("written: %s, %s" % (os.path.join(resultsDir, "where.md"),
                                 os.path.join(resultsDir, "where.png")))
+
+
+# the times of results/milestones.md [µs]: the seeds' 60 and 110 µs, and
+# on to the liquid's residence time in the die, about 500 µs (README)
+MILESTONES_US = (60, 110, 200, 300, 400, 500)
+# the analysis' times are multiples of the coupling step (1e-8 s or more),
+# kept to round-off: a time within this of a milestone is at it [s]
+TIME_MATCH = 1e-12
+
+
+def write_milestones(cases, resultsDir):
+    """results/milestones.md: each case's contacts and agglomerates at the
+    milestones its analysis reached, and at its last analysis if later,
+    with the pair contacts formed and ended since the row before (from the
+    first analysis for the first row)"""
+    rows = ["| case | time [µs] | pair contacts | wall contacts | agglomerates | "
+            "particles in agglomerates (share of those present) | largest | "
+            "pair contacts formed / ended since the row before | formed per µs since the row before |",
+            "|---|---|---|---|---|---|---|---|---|"]
+    for case in cases:
+        name = os.path.basename(case)
+        data = contactAnalysis.read(case)["contacts"]
+        last = data[-1]["time"]
+        times = [t*1e-6 for t in MILESTONES_US if t*1e-6 <= last + TIME_MATCH]
+        if not times or last > times[-1] + TIME_MATCH:
+            times.append(last)
+        before, k = data[0]["time"], 0
+        for t in times:
+            formed = ended = 0
+            while k + 1 < len(data) and data[k + 1]["time"] <= t + TIME_MATCH:
+                k += 1
+                formed += data[k]["pairFormed"]
+                ended += data[k]["pairBroken"]
+            r = data[k]
+            interval = (r["time"] - before)/1e-6
+            rows.append("| %s | %.4g | %d | %d | %d | %d (%.3g %%) | %d | %d / %d | %s |" % (
+                name, r["time"]*1e6, r["pairContacts"], r["wallContacts"], r["agglomerates"],
+                r["agglomeratedParticles"], 100*r["agglomeratedParticles"]/r["particles"],
+                r["largestAgglomerate"], formed, ended,
+                "%.3g" % (formed/interval) if interval > 0 else ""))
+            before = r["time"]
+    with open(os.path.join(resultsDir, "milestones.md"), "w") as f:
+        f.write("\n".join(rows) + "\n")
+    print("\n".join(rows))
+    print("written: %s" % os.path.join(resultsDir, "milestones.md"))
 
 
 # suffixes of the study's numerical variants (Allstudy): the same case
@@ -509,6 +592,7 @@ def main(studyDir, resultsDir):
     fig.savefig(os.path.join(resultsDir, "contacts.png"), dpi=120)
     print("written: %s, %s" % (os.path.join(resultsDir, "summary.md"),
                                 os.path.join(resultsDir, "contacts.png")))
+    write_milestones(cases, resultsDir)
     write_where(cases, resultsDir)
     write_gaps(cases, resultsDir)
     write_variants(cases, resultsDir)

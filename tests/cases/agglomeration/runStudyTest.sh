@@ -13,7 +13,7 @@
 # with the fill of the 5 um span (between 1.9e5 and 2.1e5 particles, 0.05
 # of the gap and the slot), a second set-up of the same case without
 # -resume stops naming the folder, and the report writes its tables (a row
-# for the case in summary.md, and in where.md: no agglomerate after two
+# for the case in summary.md and milestones.md, and in where.md: no agglomerate after two
 # steps from a fill 100 nm apart; in gaps.md: no pair within 50 nm) and
 # its plots.  The variant: contactStiffness 0.25 N/m, written for the DEM
 # as K1 250 nN/um, K_T0 2/7 of it and the walls' E 1.25e4 (1e3 Pa: 1e8 Pa
@@ -118,6 +118,11 @@ grep -q "study/isoelectricBrownianSlowWeb exists: add -resume" again.out || { ca
 ./Allstudy -report > report.out 2>&1 || { cat report.out; fail "report"; }
 grep -q "^| isoelectricBrownianSlowWeb | 0.02 |" results/summary.md || { cat results/summary.md; fail "summary row"; }
 [ -s results/contacts.png ] || fail "no contacts.png"
+# two steps reach no milestone: the end's row only, no contact yet
+grep -q "^| isoelectricBrownianSlowWeb | 0.02 | 0 | 0 | 0 | 0 (0 %) | 0 | 0 / 0 | 0 |" results/milestones.md \
+    || { cat results/milestones.md; fail "milestones row"; }
+grep -q "^| isoelectricBrownianSlowWeb | 0.02 | all | 0 | 0 | 0 | 0 | 0 | 0 | 0 |" results/where.md \
+    || { cat results/where.md; fail "where counts row"; }
 grep -q "^| isoelectricBrownianSlowWeb | 0.02 | none |" results/where.md || { cat results/where.md; fail "where row"; }
 [ -s results/where.png ] || fail "no where.png"
 # the fill starts every pair 100 nm apart: after two steps none within 50 nm
