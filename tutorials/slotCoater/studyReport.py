@@ -473,8 +473,10 @@ def write_milestones(cases, resultsDir):
 
 
 # suffixes of the study's numerical variants (Allstudy): the same case
-# at other numerical settings, compared with it in results/variants.md
-NUMERICAL_VARIANTS = ("SoftContacts",)
+# at other numerical settings (softer contacts at twice the DEM step; the
+# colloid cut-offs at 0.025 or 0.1 um), compared with it in
+# results/variants.md
+NUMERICAL_VARIANTS = ("SoftContacts", "ShortRange", "LongRange")
 
 
 def write_variants(cases, resultsDir):

@@ -21,7 +21,11 @@
 # step 8e-10 s, fluid step 2e-8 s, a write every 250 fluid steps (5 us);
 # the DEM's printed contact duration and tangential half-period of two
 # particles twice the case's (K1^-1/2, within 1e-5); the report's variants.md row for the pair;
-# SoftContacts before SlowWeb refused; a -resume of the variant to 4e-8 s
+# SoftContacts before SlowWeb refused.  The soft variant's own variant
+# isoelectricBrownianSlowWebSoftContactsShortRange for one step: the three
+# outer cut-offs 0.025 um (written for the DEM in um), the soft variant's
+# settings kept, its variants.md row beside the soft variant; ShortRange
+# before SoftContacts refused.  A -resume of the soft variant to 4e-8 s
 # reaches it with the set-up's lines still in the study log.
 #
 # usage: runStudyTest.sh workDir
@@ -59,6 +63,12 @@ then
     fail "isoelectricSoftContactsSlowWeb was accepted"
 fi
 grep -q "unknown case 'isoelectricSoftContactsSlowWeb'" order.out || { cat order.out; fail "message"; }
+# the cut-offs' suffix goes after SoftContacts
+if ./Allstudy -endTime 2e-8 isoelectricShortRangeSoftContacts > order.out 2>&1
+then
+    fail "isoelectricShortRangeSoftContacts was accepted"
+fi
+grep -q "unknown case 'isoelectricShortRangeSoftContacts'" order.out || { cat order.out; fail "message"; }
 [ ! -d study ] || fail "a case was set up before the unknown one was refused"
 
 ./Allstudy -endTime 2e-8 isoelectricBrownianSlowWeb > allstudy.out 2>&1 \
@@ -108,6 +118,24 @@ do
         || fail "soft $limit $ds s, not twice $d s"
 done
 [ -f $soft/2e-08/uniform/colloidCoupling ] || fail "the soft run did not reach 2e-08"
+[ "$(value $soft/system/slotCoaterParameters vdwOuterCutoff)" = 0.05e-6 ] || fail "soft: the tutorial's cut-off"
+
+# the variant's variant: its colloid cut-offs at 0.025 um (the error
+# study's colloidRange), all else as the soft variant
+./Allstudy -endTime 2e-8 isoelectricBrownianSlowWebSoftContactsShortRange > short.out 2>&1 \
+    || { cat short.out; tail -20 $soft.log; fail "Allstudy short range"; }
+short=${soft}ShortRange
+for cutoff in vdwOuterCutoff doubleLayerOuterCutoff lubricationOuterCutoff
+do
+    [ "$(value $short/system/slotCoaterParameters $cutoff)" = 0.025e-6 ] || fail "short range: $cutoff"
+    grep -q "^variable $cutoff equal 0.025$" $short/DEM/slotCoater.liggghts \
+        || fail "short range: $cutoff not written for the DEM (um)"
+done
+[ "$(value $short/system/slotCoaterParameters contactStiffness)" = 0.25 ] || fail "short range: contactStiffness"
+[ "$(value $short/constant/couplingProperties timeStep)" = 8e-10 ] || fail "short range: DEM timeStep"
+[ "$(value $short/system/slotCoaterParameters webSpeed)" = 0.1 ] || fail "short range: webSpeed"
+grep -q "^Brownian motion: 293.15 K, seed 1" $short/log.colloidDEMFoam || fail "short range: no Brownian motion"
+[ -f $short/2e-08/uniform/colloidCoupling ] || fail "the short-range run did not reach 2e-08"
 
 if ./Allstudy -endTime 2e-8 isoelectricBrownianSlowWeb > again.out 2>&1
 then
@@ -132,6 +160,8 @@ grep -q "^| isoelectricBrownianSlowWeb | 0.02 | none | 0 | 0 | 0 | 0 |" results/
 # the case beside its variant: no contact and no agglomerate in either
 grep -q "^| isoelectricBrownianSlowWeb | SoftContacts | 0.02 | 0 / 0 | 0 | 0 / 0 | 0 | 0 |" results/variants.md \
     || { cat results/variants.md; fail "variants row"; }
+grep -q "^| isoelectricBrownianSlowWebSoftContacts | ShortRange | 0.02 | 0 / 0 | 0 | 0 / 0 | 0 | 0 |" results/variants.md \
+    || { cat results/variants.md; fail "short range's variants row"; }
 
 # a resume continues the run and keeps the study log of its set-up
 ./Allstudy -resume -endTime 4e-8 isoelectricBrownianSlowWebSoftContacts > resume.out 2>&1 \
