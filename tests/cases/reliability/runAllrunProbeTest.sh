@@ -147,8 +147,10 @@ resumeAfterKill)
 demStepTooLong)
     # 1e-9 s passes the coupling's own check (the Stokes time, 1.25e-8 s)
     # but not the plugin's contact limit: its stop names the setting that
-    # applies, in seconds, at 0.05 x the contact duration it prints
-    sed -i 's/^\( *timeStep *\)4e-10;/\11e-9;/' constant/couplingProperties
+    # applies, in seconds, at 0.05 x the contact duration it prints (100
+    # DEM steps a coupling step of 1e-7 s, whatever the tutorial's)
+    sed -i -e 's/^\( *timeStep *\)[^;]*;/\11e-9;/' \
+        -e 's/^\( *couplingInterval *\)[^;]*;/\1100;/' constant/couplingProperties
     sed -i 's/^deltaT .*/deltaT          1e-7;/' system/controlDict
     expectFailure "set DEM \{ timeStep [0-9.e+-]+; \} \(seconds\) or less in constant/couplingProperties" -endTime 4e-7
     line=$(grep -a -m1 "set DEM { timeStep" "$out")
