@@ -437,9 +437,11 @@ TIME_MATCH = 1e-12
 
 def write_milestones(cases, resultsDir):
     """results/milestones.md: each case's contacts and agglomerates at the
-    milestones its analysis reached, and at its last analysis if later,
-    with the pair contacts formed and ended since the row before (from the
-    first analysis for the first row)"""
+    milestones its analysis reached (the last analysis at or before each),
+    and at its last analysis if later, with the pair contacts formed and
+    ended since the row before (from the first analysis for the first
+    row); an analysis is given once (milestones between two analyses
+    share the earlier one's row)"""
     rows = ["| case | time [µs] | pair contacts | wall contacts | agglomerates | "
             "particles in agglomerates (share of those present) | largest | "
             "pair contacts formed / ended since the row before | formed per µs since the row before |",
@@ -452,12 +454,15 @@ def write_milestones(cases, resultsDir):
         if not times or last > times[-1] + TIME_MATCH:
             times.append(last)
         before, k = data[0]["time"], 0
+        formed = ended = 0
         for t in times:
-            formed = ended = 0
+            shown = k
             while k + 1 < len(data) and data[k + 1]["time"] <= t + TIME_MATCH:
                 k += 1
                 formed += data[k]["pairFormed"]
                 ended += data[k]["pairBroken"]
+            if k == shown:
+                continue        # no analysis since the row before
             r = data[k]
             interval = (r["time"] - before)/1e-6
             rows.append("| %s | %.4g | %d | %d | %d | %d (%.3g %%) | %d | %d / %d | %s |" % (
@@ -465,7 +470,7 @@ def write_milestones(cases, resultsDir):
                 r["agglomeratedParticles"], 100*r["agglomeratedParticles"]/r["particles"],
                 r["largestAgglomerate"], formed, ended,
                 "%.3g" % (formed/interval) if interval > 0 else ""))
-            before = r["time"]
+            before, formed, ended = r["time"], 0, 0
     with open(os.path.join(resultsDir, "milestones.md"), "w") as f:
         f.write("\n".join(rows) + "\n")
     print("\n".join(rows))

@@ -25,7 +25,7 @@
 # isoelectricBrownianSlowWebSoftContactsShortRange for one step: the three
 # outer cut-offs 0.025 um (written for the DEM in um), the soft variant's
 # settings kept, its variants.md row beside the soft variant; ShortRange
-# before SoftContacts refused.  A -resume of the soft variant to 4e-8 s
+# before SoftContacts, and two cut-off suffixes, refused.  A -resume of the soft variant to 4e-8 s
 # reaches it with the set-up's lines still in the study log.
 #
 # usage: runStudyTest.sh workDir
@@ -69,6 +69,12 @@ then
     fail "isoelectricShortRangeSoftContacts was accepted"
 fi
 grep -q "unknown case 'isoelectricShortRangeSoftContacts'" order.out || { cat order.out; fail "message"; }
+# one cut-off suffix at most
+if ./Allstudy -endTime 2e-8 isoelectricLongRangeShortRange > order.out 2>&1
+then
+    fail "isoelectricLongRangeShortRange was accepted"
+fi
+grep -q "unknown case 'isoelectricLongRangeShortRange'" order.out || { cat order.out; fail "message"; }
 [ ! -d study ] || fail "a case was set up before the unknown one was refused"
 
 ./Allstudy -endTime 2e-8 isoelectricBrownianSlowWeb > allstudy.out 2>&1 \

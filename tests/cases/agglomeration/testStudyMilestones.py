@@ -26,13 +26,18 @@ Contact analyses (postProcessing/contactAnalysis/<start>/contacts.csv):
   nearCCC: analysed at 0, 60, 110, 200, 300, 400, 450 and 500 us, one
   contact formed at each: a row at each milestone, 2 formed from 400 to
   500 us (0.02 per us), none more for the end, which is a milestone.
+  marginal: analysed at 0, 50 and 150 us only (3 and 2 contacts formed,
+  none ended): the 60 and 110 us milestones both fall on the 50 us
+  analysis, given once (3 formed, 0.06 per us), then the end, 150 us (2
+  formed in 100 us, 0.02 per us).
 
-where_counts: agglomerates of 2, 3, 4, 5, 9, 10 and 12 particles under
-the upstream lip and one of 2 in the slot: per part of the die in the
-order upstream lip, below the slot, downstream lip, in the slot, then
-all: (under the upstream lip, 7, [1, 1, 1, 2, 2], 45), (in the slot, 1,
-[1, 0, 0, 0, 0], 2), (all, 8, [2, 1, 1, 2, 2], 47); none: only (all, 0,
-[0, 0, 0, 0, 0], 0).
+where_counts: one of 2 particles in the slot, then agglomerates of 2, 3,
+4, 5, 9, 10 and 12 particles under the upstream lip, then one of 3 below
+the slot: per part of the die in the order upstream lip, below the slot,
+downstream lip, in the slot (not the order met), then all: (under the
+upstream lip, 7, [1, 1, 1, 2, 2], 45), (below the slot, 1, [0, 1, 0, 0,
+0], 3), (in the slot, 1, [1, 0, 0, 0, 0], 2), (all, 9, [2, 2, 1, 2, 2],
+50); none: only (all, 0, [0, 0, 0, 0, 0], 0).
 
 usage: testStudyMilestones.py colloidFoamDir workDir
 """
@@ -85,10 +90,13 @@ def main():
         (t, 1, 0, k + 1, 0, k + 1, 2*(k + 1), 2, 1000)
         for k, t in enumerate(("6e-05", "0.00011", "0.0002", "0.0003", "0.0004", "0.00045",
                                "0.0005"))])
+    write_analysis(os.path.join(study, "marginal"), "0", [
+        ("0", 0, 0, 0, 0, 0, 0, 0, 1000), ("5e-05", 3, 0, 3, 0, 3, 6, 2, 1000),
+        ("0.00015", 2, 0, 5, 0, 5, 10, 2, 1000)])
 
     results = os.path.join(work, "results")
     os.makedirs(results)
-    cases = [os.path.join(study, c) for c in ("isoelectric", "stable", "nearCCC")]
+    cases = [os.path.join(study, c) for c in ("isoelectric", "stable", "nearCCC", "marginal")]
     studyReport.write_milestones(cases, results)
     with open(os.path.join(results, "milestones.md")) as f:
         rows = f.read().splitlines()[2:]
@@ -101,19 +109,22 @@ def main():
                 "| nearCCC | 200 | 3 | 0 | 3 | 6 (0.6 %) | 2 | 1 / 0 | 0.0111 |",
                 "| nearCCC | 300 | 4 | 0 | 4 | 8 (0.8 %) | 2 | 1 / 0 | 0.01 |",
                 "| nearCCC | 400 | 5 | 0 | 5 | 10 (1 %) | 2 | 1 / 0 | 0.01 |",
-                "| nearCCC | 500 | 7 | 0 | 7 | 14 (1.4 %) | 2 | 2 / 0 | 0.02 |"]
+                "| nearCCC | 500 | 7 | 0 | 7 | 14 (1.4 %) | 2 | 2 / 0 | 0.02 |",
+                "| marginal | 50 | 3 | 0 | 3 | 6 (0.6 %) | 2 | 3 / 0 | 0.06 |",
+                "| marginal | 150 | 5 | 0 | 5 | 10 (1 %) | 2 | 2 / 0 | 0.02 |"]
     ok = rows == expected
     for k in range(max(len(rows), len(expected))):
         got = rows[k] if k < len(rows) else "(none)"
         want = expected[k] if k < len(expected) else "(none)"
         print("%s\n    expected %s: %s" % (got, want, "ok" if got == want else "FAIL"))
 
-    up, slot = "under the upstream lip", "in the slot"
-    groups = [(list(range(n)), (0, 0, 0), up) for n in (2, 3, 4, 5, 9, 10, 12)]
-    groups.append(([0, 1], (0, 0, 0), slot))
+    up, below, slot = "under the upstream lip", "below the slot", "in the slot"
+    groups = [([0, 1], (0, 0, 0), slot)]
+    groups += [(list(range(n)), (0, 0, 0), up) for n in (2, 3, 4, 5, 9, 10, 12)]
+    groups.append(([0, 1, 2], (0, 0, 0), below))
     counts = studyReport.where_counts(groups)
-    want = [(up, 7, [1, 1, 1, 2, 2], 45), (slot, 1, [1, 0, 0, 0, 0], 2),
-            ("all", 8, [2, 1, 1, 2, 2], 47)]
+    want = [(up, 7, [1, 1, 1, 2, 2], 45), (below, 1, [0, 1, 0, 0, 0], 3),
+            (slot, 1, [1, 0, 0, 0, 0], 2), ("all", 9, [2, 2, 1, 2, 2], 50)]
     good = counts == want
     print("where_counts %s\n    expected %s: %s" % (counts, want, "ok" if good else "FAIL"))
     ok = ok and good

@@ -15,7 +15,7 @@
 # up at 50 m/s (um/us).  The
 # implicit drag of the still liquid stops it within about 50 m/s x 12.5 ns
 # (its momentum relaxation time m/(6 pi mu a)) = 0.6 um: it crosses the
-# plane within about 10 DEM steps (1 ns) and keeps about 90 % of its
+# plane within about 1 ns (2.5 DEM steps of 4e-10 s) and keeps about 90 % of its
 # speed.
 #
 # Asserted: the run (Allrun, 0.2 us) ends without error (the coupling
