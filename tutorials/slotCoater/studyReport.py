@@ -124,16 +124,21 @@ def release_gap(case):
     return max(float(d.get("releaseGap", d.get("touchingGap", 0.01))), agglomerate_gap(case))
 
 
+# the parts of the die (part_of_die), upstream to downstream
+DIE_PARTS = ("under the upstream lip", "below the slot", "under the downstream lip", "in the slot")
+
+
 def part_of_die(g, x, y):
-    """The part of the die above a point: x along the web from the slot's
-    upstream wall, y up from the substrate"""
+    """The part of the die above a point (one of DIE_PARTS): x along the
+    web from the slot's upstream wall, y up from the substrate"""
+    upstreamLip, belowSlot, downstreamLip, inSlot = DIE_PARTS
     if y > g["gap"]:
-        return "in the slot"
+        return inSlot
     if x < 0:
-        return "under the upstream lip"
+        return upstreamLip
     if x <= g["slotWidth"]:
-        return "below the slot"
-    return "under the downstream lip"
+        return belowSlot
+    return downstreamLip
 
 
 def periodic_offset(cloud, span, a, b):
@@ -347,9 +352,8 @@ def write_gaps(cases, resultsDir):
                                 os.path.join(resultsDir, "gaps.png")))
 
 
-# the parts of the die (part_of_die), upstream to downstream, and the
-# agglomerate sizes [particles] counted apart in where.md's first table
-DIE_PARTS = ("under the upstream lip", "below the slot", "under the downstream lip", "in the slot")
+# the agglomerate sizes [particles] counted apart in where.md's first
+# table, by part of the die (DIE_PARTS)
 SIZE_CLASSES = ((2, 2), (3, 3), (4, 4), (5, 9), (10, None))
 
 
