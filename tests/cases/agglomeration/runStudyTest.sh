@@ -45,36 +45,28 @@ rm -rf study results
 
 fail() { echo "FAIL: $*"; exit 1; }
 
+# Allstudy refuses the names (arguments after -endTime 2e-8) naming the
+# unknown case $1, before any run
+refused()
+{
+    local unknown=$1
+    shift
+    if ./Allstudy -endTime 2e-8 "$@" > refused.out 2>&1
+    then
+        fail "$* was accepted"
+    fi
+    grep -q "unknown case '$unknown'" refused.out || { cat refused.out; fail "message for $unknown"; }
+}
 # an unknown case stops before any run
-if ./Allstudy -endTime 2e-8 isoelectricBrownianSlowWeb noSuchCase > unknown.out 2>&1
-then
-    fail "an unknown case was accepted"
-fi
-grep -q "unknown case 'noSuchCase'" unknown.out || { cat unknown.out; fail "message"; }
+refused noSuchCase isoelectricBrownianSlowWeb noSuchCase
 # the flow change's suffix goes last
-if ./Allstudy -endTime 2e-8 isoelectricSlowWebBrownian > order.out 2>&1
-then
-    fail "isoelectricSlowWebBrownian was accepted"
-fi
-grep -q "unknown case 'isoelectricSlowWebBrownian'" order.out || { cat order.out; fail "message"; }
+refused isoelectricSlowWebBrownian isoelectricSlowWebBrownian
 # the numerical variant's suffix goes last
-if ./Allstudy -endTime 2e-8 isoelectricSoftContactsSlowWeb > order.out 2>&1
-then
-    fail "isoelectricSoftContactsSlowWeb was accepted"
-fi
-grep -q "unknown case 'isoelectricSoftContactsSlowWeb'" order.out || { cat order.out; fail "message"; }
+refused isoelectricSoftContactsSlowWeb isoelectricSoftContactsSlowWeb
 # the cut-offs' suffix goes after SoftContacts
-if ./Allstudy -endTime 2e-8 isoelectricShortRangeSoftContacts > order.out 2>&1
-then
-    fail "isoelectricShortRangeSoftContacts was accepted"
-fi
-grep -q "unknown case 'isoelectricShortRangeSoftContacts'" order.out || { cat order.out; fail "message"; }
+refused isoelectricShortRangeSoftContacts isoelectricShortRangeSoftContacts
 # one cut-off suffix at most
-if ./Allstudy -endTime 2e-8 isoelectricLongRangeShortRange > order.out 2>&1
-then
-    fail "isoelectricLongRangeShortRange was accepted"
-fi
-grep -q "unknown case 'isoelectricLongRangeShortRange'" order.out || { cat order.out; fail "message"; }
+refused isoelectricLongRangeShortRange isoelectricLongRangeShortRange
 [ ! -d study ] || fail "a case was set up before the unknown one was refused"
 
 ./Allstudy -endTime 2e-8 isoelectricBrownianSlowWeb > allstudy.out 2>&1 \
