@@ -205,7 +205,7 @@ private:
             if (c > 0.0 && !(filmRupture_ && filmRuptured(d, h, en)))
             {
                 if (d.is_wall) implicit_->addWall(d.i, c, en, d.v_j);
-                else implicit_->addPair(d.i, d.j, c, en);
+                else implicit_->addPair(d.i, d.j, c, en, lub_.front().flowFactor(Ri, Rj, h));
             }
         }
 
@@ -401,12 +401,10 @@ private:
         }
         if (lubOn)
         {
-            const colloid::LubricationParameters & p = lub_.front().parameters();
+            const colloid::Lubrication & lub = lub_.front();
             const double t = check.smallest([&](double m, double R, int)
             {
-                // the faded form is the uncut 1/h there (h_out -> inf)
-                return lubricationTime(m/2, p.viscosity, R/2, p.innerCutoff,
-                                       p.fade ? HUGE_VAL : p.outerCutoff);
+                return m/2/lub.resistance(R, R, lub.parameters().innerCutoff);
             });
             check.limit("lubrication relaxation at its inner cut-off", t, 0.0);
         }
@@ -555,8 +553,11 @@ private:
         p.innerCutoff = read.optionalScalar("lubricationInnerCutoff", p.innerCutoff, U::length, -HUGE_VAL, HUGE_VAL, "m");
         p.outerCutoff = read.optionalScalar("lubricationOuterCutoff", p.outerCutoff, U::length, -HUGE_VAL, HUGE_VAL, "m");
         p.fade = read.selector("lubricationFade", 2,
-            "0 (shifted: 1/h - 1/h_out) or 1 (faded: 1/h up to half the outer "
+            "0 (shifted: c(h) - c(h_out)) or 1 (faded: c(h) up to half the outer "
             "cut-off, a smooth step to zero at it)") == 1;
+        p.farField = read.selector("lubricationFarField", 2,
+            "0 (near field: 6 pi mu R*^2/h) or 1 (the two-sphere and sphere-wall "
+            "hydrodynamics at every gap, with the pairs' flow-driven approach)") == 1;
         filmRupture_ = read.selector("lubricationAfterContact", 2,
             "0 (the separation lubricated as the approach) or 1 (no lubrication "
             "while separating after the overlap exceeded the inner cut-off)") == 1;

@@ -369,9 +369,9 @@ double FixColloidImplicit::compute_vector(int n)
 
 /* ---------------------------------------------------------------------- */
 
-void FixColloidImplicit::addPair(int i, int j, double c, const double *n)
+void FixColloidImplicit::addPair(int i, int j, double c, const double *n, double flow)
 {
-    PairTerm t = {i, j, c, {n[0], n[1], n[2]}};
+    PairTerm t = {i, j, c, {n[0], n[1], n[2]}, flow};
     pairs_.push_back(t);
 }
 
@@ -657,9 +657,10 @@ void FixColloidImplicit::solveSystem(double h, bool accumulateImpulse)
     foldPeriodicImages();
     const int nlocal = atom->nlocal;
     const int *mask = atom->mask;
-    int local[3] = {!pairs_.empty() || !walls_.empty(), 0, nWithoutDrag()}, any[3] = {0, 0, 0};
+    int local[4] = {!pairs_.empty() || !walls_.empty(), 0, nWithoutDrag(), 0}, any[4] = {0, 0, 0, 0};
     for (int i = 0; i < nlocal && !local[1]; i++) local[1] = !(mask[i] & integrated_);
-    MPI_Allreduce(local, any, 3, MPI_INT, MPI_MAX, world);
+    if (uf_) for (std::size_t at = 0; at < pairs_.size() && !local[3]; at++) local[3] = pairs_[at].flow != 0.0;
+    MPI_Allreduce(local, any, 4, MPI_INT, MPI_MAX, world);
 
     // atoms inserted since the coupling set the drag: it sets theirs now,
     // on every rank (it may communicate), so that they feel the fluid from
@@ -673,6 +674,7 @@ void FixColloidImplicit::solveSystem(double h, bool accumulateImpulse)
     if (!any[0] && !Ksl_) return;
 
     h_ = h;
+    p_.resize(3*(atom->nmax > 0 ? atom->nmax : 1));
     double **v = atom->v;
     double **f = atom->f;
     const double *m = atom->rmass;
@@ -745,7 +747,6 @@ void FixColloidImplicit::solveSystem(double h, bool accumulateImpulse)
     r_.resize(3*nlocal);
     z_.resize(3*nlocal);
     q_.resize(3*nlocal);
-    p_.resize(3*(atom->nmax > 0 ? atom->nmax : 1));
     blockA_.resize(6*nlocal);
     blockInv_.resize(6*nlocal);
 
@@ -767,10 +768,20 @@ void FixColloidImplicit::solveSystem(double h, bool accumulateImpulse)
             x_[3*i + k] = 0.0;
         }
     }
+    // the liquid's velocity at every pair partner, ghosts too, for the
+    // pairs damped relative to a share of it (p_ is free until the solve)
+    if (any[3])
+    {
+        for (int i = 0; i < nlocal; i++)
+            for (int k = 0; k < 3; k++) p_[3*i + k] = uf[i][k];
+        comm->forward_comm_fix(this);
+    }
     const uint64_t pairKey = thermal ? solveKey(pairStream, h) : 0;
     for (const PairTerm & t : pairs_)
     {
         double rel = h*t.c*(dot3(t.n, v[t.i]) - dot3(t.n, v[t.j]));
+        if (any[3] && t.flow != 0.0)
+            rel -= h*t.c*t.flow*(dot3(t.n, &p_[3*t.i]) - dot3(t.n, &p_[3*t.j]));
         if (thermal) rel -= pairThermalImpulse(pairKey, tag[t.i], tag[t.j], t.c, h);
         addOuter(&blockA_[6*t.i], h*t.c, t.n);
         for (int k = 0; k < 3; k++) r_[3*t.i + k] -= rel*t.n[k];

@@ -131,15 +131,17 @@ public:
     bool collecting() const { return collecting_; }
 
     //- A lubricated pair: local atom i, atom j (local or ghost),
-    //  resistance c [run units: mass/time], unit normal n from j to i
-    void addPair(int i, int j, double c, const double *n);
+    //  resistance c [run units: mass/time], unit normal n from j to i;
+    //  the damping acts on the normal velocity relative to flow times the
+    //  liquid's (the coupling's u_f at i and j; lubrication.H, flowFactor)
+    void addPair(int i, int j, double c, const double *n, double flow = 0.0);
 
     //- A lubricated wall contact of local atom i: resistance c, unit
     //  normal n from the wall to i, wall velocity vWall [run units]
     void addWall(int i, double c, const double *n, const double *vWall);
 
 private:
-    struct PairTerm { int i, j; double c; double n[3]; };
+    struct PairTerm { int i, j; double c; double n[3]; double flow; };
     struct WallTerm { int i; double c; double n[3]; double vWall[3]; };
 
     // the solve with step h [run units]; the force set makes the next

@@ -42,10 +42,6 @@ TEST(TimeStepLimits, HandComputedValuesForSubmicronGlassInWater)
     // Walton-Braun K1 = 10, K2 = 10/0.8^2 = 15.625:
     // pi/2 (1.3293e-9 + sqrt(1.7671e-17/15.625) = 1.0635e-9) = 3.7586e-9 s
     EXPECT_NEAR(timeStep::waltonBraunContactTime(mStar, 10, 15.625), 3.7586e-9, 2e-4*3.7586e-9);
-    // lubrication at h_in = 1 nm, h_out = 100 nm:
-    // c = 6 pi 1e-3 (0.075e-6)^2 (1e9 - 1e7) = 1.06029e-16*9.9e8 = 1.04969e-7 kg/s
-    // m*/c = 1.7671e-17/1.04969e-7 = 1.6835e-10 s
-    EXPECT_NEAR(timeStep::lubricationTime(mStar, 1e-3, Rs, 1e-9, 100e-9), 1.6835e-10, 2e-4*1.6835e-10);
     // vdW spring at h0 = 0.4 nm, A = 4.3e-21 J (glass, seed 002 table 1):
     // k = 4.3e-21*0.075e-6/(3*6.4e-29) = 3.225e-28/1.92e-28 = 1.6797 N/m
     const double kv = timeStep::vanDerWaalsStiffness(4.3e-21, Rs, 0.4e-9);

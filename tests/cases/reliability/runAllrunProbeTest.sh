@@ -12,6 +12,8 @@
 #   cutoffFormTypo    colloidCutoffForm fade (a typo of faded): stops
 #                     before any step, naming the file, keyword, value and
 #                     the two forms allowed
+#   lubricationFormTypo  lubricationForm twoSpheres (for twoSphere): stops
+#                     likewise, naming the two forms allowed
 #   notConverged      20 iterations of the steady flow (endTime of
 #                     system/controlDict.steadyFlow): it does not converge;
 #                     stops saying so, no particle run
@@ -82,6 +84,12 @@ nuZero)
 cutoffFormTypo)
     setParam colloidCutoffForm fade
     expectFailure "system/slotCoaterParameters: keyword 'colloidCutoffForm' is 'fade'; allowed: faded or shifted"
+    [ ! -e log.blockMesh ] || fail "blockMesh was run"
+    noParticleRun ;;
+
+lubricationFormTypo)
+    setParam lubricationForm twoSpheres
+    expectFailure "system/slotCoaterParameters: keyword 'lubricationForm' is 'twoSpheres'; allowed: nearField or twoSphere"
     [ ! -e log.blockMesh ] || fail "blockMesh was run"
     noParticleRun ;;
 
