@@ -29,8 +29,8 @@ its last analysis, with the contacts formed and ended in between: the
 growth a single end-of-run row hides.  where.md begins with the
 agglomerates of each case counted by part of the die and size.
 
-A case beside its numerical variant (the same case name with a suffix of
-NUMERICAL_VARIANTS, both in the study: results/variants.md): the contacts
+A case beside its numerical or model variant (the same case name with a
+suffix of NUMERICAL_VARIANTS, both in the study: results/variants.md): the contacts
 and agglomerates of the two, and how many agglomerates are the same
 particles (write_variants).
 
@@ -481,11 +481,11 @@ def write_milestones(cases, resultsDir):
     print("written: %s" % os.path.join(resultsDir, "milestones.md"))
 
 
-# suffixes of the study's numerical variants (Allstudy): the same case
-# at other numerical settings (softer contacts at twice the DEM step; the
-# colloid cut-offs at 0.025 or 0.1 um), compared with it in
-# results/variants.md
-NUMERICAL_VARIANTS = ("SoftContacts", "ShortRange", "LongRange")
+# suffixes of the study's numerical and model variants (Allstudy): the
+# same case at other numerical settings (softer contacts at twice the DEM
+# step; the colloid cut-offs at 0.025 or 0.1 um) or with the two-sphere
+# hydrodynamics, compared with it in results/variants.md
+NUMERICAL_VARIANTS = ("SoftContacts", "TwoSphere", "ShortRange", "LongRange")
 
 
 def write_variants(cases, resultsDir):

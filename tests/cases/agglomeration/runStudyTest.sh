@@ -25,7 +25,13 @@
 # isoelectricBrownianSlowWebSoftContactsShortRange for one step: the three
 # outer cut-offs 0.025 um (written for the DEM in um), the soft variant's
 # settings kept, its variants.md row beside the soft variant; ShortRange
-# before SoftContacts, and two cut-off suffixes, refused.  A -resume of the soft variant to 4e-8 s
+# before SoftContacts, and two cut-off suffixes, refused.  Its model
+# variant isoelectricBrownianSlowWebSoftContactsTwoSphere for one step:
+# lubricationForm twoSphere with the lubrication's outer cut-off 0.15 um
+# (written for the DEM: lubricationFarField 1, 0.15 um), the other
+# cut-offs and the soft variant's settings kept, its variants.md row;
+# TwoSphere before SoftContacts, and a cut-off suffix after TwoSphere,
+# refused.  A -resume of the soft variant to 4e-8 s
 # reaches it with the set-up's lines still in the study log.
 #
 # usage: runStudyTest.sh workDir
@@ -67,6 +73,9 @@ refused isoelectricSoftContactsSlowWeb isoelectricSoftContactsSlowWeb
 refused isoelectricShortRangeSoftContacts isoelectricShortRangeSoftContacts
 # one cut-off suffix at most
 refused isoelectricLongRangeShortRange isoelectricLongRangeShortRange
+# the model's suffix goes after SoftContacts, and no cut-off suffix after it
+refused isoelectricTwoSphereSoftContacts isoelectricTwoSphereSoftContacts
+refused isoelectricTwoSphereShortRange isoelectricTwoSphereShortRange
 [ ! -d study ] || fail "a case was set up before the unknown one was refused"
 
 ./Allstudy -endTime 2e-8 isoelectricBrownianSlowWeb > allstudy.out 2>&1 \
@@ -135,6 +144,27 @@ done
 grep -q "^Brownian motion: 293.15 K, seed 1" $short/log.colloidDEMFoam || fail "short range: no Brownian motion"
 [ -f $short/2e-08/uniform/colloidCoupling ] || fail "the short-range run did not reach 2e-08"
 
+# the variant's model variant: the two-sphere hydrodynamics, the
+# lubrication's cut-off at a radius, all else as the soft variant
+./Allstudy -endTime 2e-8 isoelectricBrownianSlowWebSoftContactsTwoSphere > twoSphere.out 2>&1 \
+    || { cat twoSphere.out; tail -20 $soft.log; fail "Allstudy two-sphere"; }
+two=${soft}TwoSphere
+[ "$(value $two/system/slotCoaterParameters lubricationForm)" = twoSphere ] || fail "two-sphere: lubricationForm"
+[ "$(value $two/system/slotCoaterParameters lubricationOuterCutoff)" = 0.15e-6 ] || fail "two-sphere: its cut-off"
+grep -q "^variable lubricationFarField equal 1$" $two/DEM/slotCoater.liggghts \
+    || fail "two-sphere: lubricationFarField not written for the DEM"
+grep -q "^variable lubricationOuterCutoff equal 0.15$" $two/DEM/slotCoater.liggghts \
+    || fail "two-sphere: the cut-off not written for the DEM (um)"
+grep -q "^variable lubricationFarField equal 0$" $soft/DEM/slotCoater.liggghts \
+    || fail "soft: not the near-field form"
+for cutoff in vdwOuterCutoff doubleLayerOuterCutoff
+do
+    [ "$(value $two/system/slotCoaterParameters $cutoff)" = 0.05e-6 ] || fail "two-sphere: $cutoff"
+done
+[ "$(value $two/system/slotCoaterParameters contactStiffness)" = 0.25 ] || fail "two-sphere: contactStiffness"
+[ "$(value $two/system/slotCoaterParameters webSpeed)" = 0.1 ] || fail "two-sphere: webSpeed"
+[ -f $two/2e-08/uniform/colloidCoupling ] || fail "the two-sphere run did not reach 2e-08"
+
 if ./Allstudy -endTime 2e-8 isoelectricBrownianSlowWeb > again.out 2>&1
 then
     fail "a second set-up of the case did not stop"
@@ -160,6 +190,8 @@ grep -q "^| isoelectricBrownianSlowWeb | SoftContacts | 0.02 | 0 / 0 | 0 | 0 / 0
     || { cat results/variants.md; fail "variants row"; }
 grep -q "^| isoelectricBrownianSlowWebSoftContacts | ShortRange | 0.02 | 0 / 0 | 0 | 0 / 0 | 0 | 0 |" results/variants.md \
     || { cat results/variants.md; fail "short range's variants row"; }
+grep -q "^| isoelectricBrownianSlowWebSoftContacts | TwoSphere | 0.02 | 0 / 0 | 0 | 0 / 0 | 0 | 0 |" results/variants.md \
+    || { cat results/variants.md; fail "two-sphere variants row"; }
 
 # a resume continues the run and keeps the study log of its set-up
 ./Allstudy -resume -endTime 4e-8 isoelectricBrownianSlowWebSoftContacts > resume.out 2>&1 \
