@@ -545,7 +545,8 @@ private:
         static const char *const names[] = {
             "viscosity", "liquidViscosity",
             "innerCutoff", "lubricationInnerCutoff",
-            "outerCutoff", "lubricationOuterCutoff", NULL};
+            "outerCutoff", "lubricationOuterCutoff",
+            "farField", "lubricationFarField", NULL};
         if (!atom->rmass_flag)
             error->all(FLERR, "cohesion colloid/.../lub needs per-particle masses (atom_style granular)");
         colloid::LubricationParameters p;

@@ -14,6 +14,11 @@
    f: every other force of the step (contact, surface forces, gravity,
    the coupling's explicit drag part), all evaluated before this fix;
    R = sum over lubricated pairs c n n^T (e_i - e_j)(e_i - e_j)^T
+       [a pair with a flow factor phi (lubrication.H, the two-sphere
+       form) adds c phi n n^T (u_f,i - u_f,j) to i's right-hand side and
+       its negative to j's: damping relative to a share of the liquid's
+       velocity; the liquid's velocity at a ghost partner comes by one
+       forward communication a solve]
      + sum over lubricated wall contacts c n n^T (wall velocity on the right)
      + K (drag). R is symmetric positive semi-definite, so
      - the kinetic energy cannot grow from damping, for any dt and any

@@ -8,7 +8,9 @@
 
     forceDrivenApproach: pulled together by equal and opposite constant
       forces F (fix addforce) in liquid at rest, from h = a to h = a/50.
-      Overdamped (the Stokes time m/K = 12.5 ns is 1e-3 of the run):
+      Overdamped (the Stokes time m/K = 12.5 ns is 1.5e-6 of the run; the
+      steps are 28 of it, which the implicit update takes in force balance
+      exactly, fix_colloid_implicit.h):
           dh/dt = -G(h/a) F/(3 pi mu a),
           G(u) = (6u^2 + 4u)/(6u^2 + 13u + 2)      (Honig et al. 1971),
       so the time to h1 is the integral of 3 pi mu a/(G F) dh, by Simpson's
@@ -20,7 +22,9 @@
       the line of centres, u_f = E (-x, y/2, z/2), set at both particles
       every step from their positions. The pair closes at
           dh/dt = -(1 - A(r)) E r a,   r = 2 + h/a,
-      with Batchelor & Green's flow mobility 1 - A (written out below);
+      with Batchelor & Green's flow mobility 1 - A (the kernel's
+      mobility::twoSpheresInFlow, held to exact values in
+      unit.HydrodynamicMobility; here the update's flow factor is tested);
       the time from h = a to h = a/50 agrees with its integral within 1 %
       (it is within 1e-4). With the damping acting on the pair's velocity
       alone (the flow factor dropped) the pair closes at G instead of

@@ -24,7 +24,11 @@
     equal spheres at r = 2.025 ... 10 (Wilson's 2013 two-sphere code, via
     the stokesian-dynamics resistance tables; checked to 1e-6 against
     Jeffrey & Onishi's 1984 series), Batchelor & Green's near-contact
-    limit 1 - A = 4.0774 h/a and far field A = 5/r^3 + ... .
+    limit 1 - A = 4.0774 h/a and far field A = 5/r^3 + ... .  At the
+    table's points below r = 3 the kernel interpolates these same values,
+    so there the test checks their transcription; between the points no
+    exact values were at hand (the kernel's header estimates the
+    interpolation error).
 \*---------------------------------------------------------------------------*/
 #include "constants.H"
 #include "hydrodynamicMobility.H"
@@ -35,6 +39,8 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <stdexcept>
+#include <string>
 
 using namespace colloid;
 
@@ -150,8 +156,8 @@ const ExactA exactA[] =
 
 TEST(HydrodynamicMobility, FlowDrivenAgainstExactValues)
 {
-    // the table's 6 digits, and at r = 3, where the far-field series
-    // takes over, its 5.4e-5
+    // to the table's last digit (6 decimals to r = 4.5, 4 figures beyond),
+    // and at r = 3, where the far-field series takes over, its 5.4e-5
     for (const ExactA& e : exactA)
     {
         const double flow = mobility::twoSpheresInFlow(e.r - 2);
@@ -164,7 +170,7 @@ TEST(HydrodynamicMobility, FlowDrivenLimitsAndShape)
     // Batchelor & Green's near-contact limit, and 5/r^3 far away
     EXPECT_NEAR(mobility::twoSpheresInFlow(1e-7)/1e-7, 4.0774, 1e-4);
     EXPECT_NEAR((1 - mobility::twoSpheresInFlow(1e3))*std::pow(1002.0, 3), 5.0, 1e-3);
-    // continuous where the forms meet (u = 0.025 and r = 3.5)
+    // continuous where the forms meet (u = 0.025 and r = 3)
     for (double u : {0.025, 1.0})
     {
         EXPECT_NEAR(mobility::twoSpheresInFlow(u*(1 - 1e-12)), mobility::twoSpheresInFlow(u*(1 + 1e-12)), 1e-6)
@@ -189,24 +195,54 @@ TEST(HydrodynamicMobility, FlowFactorGivesThePairTheFlowDrivenMobility)
     // two equal spheres, each with drag zeta = 6 pi mu a towards the
     // liquid's velocity at its centre, and the pair damping
     // -c (v_n - phi u_n): the relative normal velocity in a flow with
-    // relative normal velocity u_n is (zeta/2 + c phi)/(zeta/2 + c) u_n
+    // relative normal velocity u_n is (zeta/2 + c phi)/(zeta/2 + c) u_n.
+    // Outer cut-off 2a, faded: 1 - A up to h = a, then 1 - A w with the
+    // resistance's weight w (written out: x = (h - a)/a, w = 1 - x^2 (3 -
+    // 2x)), and 1 beyond 2a
     const double mu = 1e-3, a = 0.15e-6, pi = constants::pi;
     LubricationParameters p;
     p.viscosity = mu;
     p.innerCutoff = 1e-12;
-    p.outerCutoff = 1.0;
+    p.outerCutoff = 2*a;
     p.fade = true;
     p.farField = true;
     const Lubrication lub(p);
     overGaps([&](double u)
     {
         const double zr = 3*pi*mu*a, c = lub.resistance(a, a, u*a), phi = lub.flowFactor(a, a, u*a);
-        EXPECT_NEAR((zr + c*phi)/(zr + c), mobility::twoSpheresInFlow(u), 1e-12) << "h/a = " << u;
+        const double x = std::min(1.0, std::max(0.0, u - 1)), w = 1 - x*x*(3 - 2*x);
+        const double expected = 1 - (1 - mobility::twoSpheresInFlow(u))*w;
+        EXPECT_NEAR((zr + c*phi)/(zr + c), expected, 1e-12) << "h/a = " << u;
+        // and the force-driven mobility: G up to a, the faded resistance's beyond
+        if (u <= 1)
+        {
+            EXPECT_NEAR(zr/(zr + c), mobility::twoSpheres(u), 1e-12) << "h/a = " << u;
+        }
     });
     // none in the near-field form, for a wall, or beyond the cut-off
     EXPECT_EQ(lub.flowFactor(a, wallRadius, 0.1*a), 0.0);
-    EXPECT_EQ(lub.flowFactor(a, a, 2.0), 0.0);
+    EXPECT_EQ(lub.flowFactor(a, a, 2*a), 0.0);
     LubricationParameters q = p;
     q.farField = false;
     EXPECT_EQ(Lubrication(q).flowFactor(a, a, 0.1*a), 0.0);
+}
+
+TEST(HydrodynamicMobility, TwoSphereFormRefusesTheShiftedCutoff)
+{
+    // shifted, it would lose c(h_out) ~ 1.5 zeta a/h_out at every gap
+    LubricationParameters p;
+    p.outerCutoff = 0.3e-6;
+    p.farField = true;
+    p.fade = false;
+    try
+    {
+        Lubrication lub(p);
+        FAIL() << "the shifted two-sphere form was accepted";
+    }
+    catch (const std::invalid_argument& e)
+    {
+        EXPECT_NE(std::string(e.what()).find("'farField' = 1 needs 'fade' = 1"), std::string::npos) << e.what();
+    }
+    p.fade = true;
+    EXPECT_NO_THROW(Lubrication lub(p));
 }

@@ -30,7 +30,7 @@ growth a single end-of-run row hides.  where.md begins with the
 agglomerates of each case counted by part of the die and size.
 
 A case beside its numerical or model variant (the same case name with a
-suffix of NUMERICAL_VARIANTS, both in the study: results/variants.md): the contacts
+suffix of VARIANT_SUFFIXES, both in the study: results/variants.md): the contacts
 and agglomerates of the two, and how many agglomerates are the same
 particles (write_variants).
 
@@ -485,7 +485,7 @@ def write_milestones(cases, resultsDir):
 # same case at other numerical settings (softer contacts at twice the DEM
 # step; the colloid cut-offs at 0.025 or 0.1 um) or with the two-sphere
 # hydrodynamics, compared with it in results/variants.md
-NUMERICAL_VARIANTS = ("SoftContacts", "TwoSphere", "ShortRange", "LongRange")
+VARIANT_SUFFIXES = ("SoftContacts", "TwoSphere", "ShortRange", "LongRange")
 
 
 def write_variants(cases, resultsDir):
@@ -512,7 +512,7 @@ def write_variants(cases, resultsDir):
         return int(round(t*1e9))
 
     for name, case in sorted(by_name.items()):
-        for suffix in NUMERICAL_VARIANTS:
+        for suffix in VARIANT_SUFFIXES:
             variant = by_name.get(name + suffix)
             if variant is None:
                 continue
