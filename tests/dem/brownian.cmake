@@ -13,12 +13,6 @@ dem_gtest_cases(brownianTests dem.brownian. brownian
 
 # Lubrication noise across a processor boundary: the stock liggghts with
 # the plugin preloaded, serial against 2 ranks (runBrownianParallelTest.sh)
-find_program(LIGGGHTS_EXECUTABLE liggghts)
-if(LIGGGHTS_EXECUTABLE)
-    add_test(NAME dem.brownian.lubricatedPairsParallel
-        COMMAND ${CMAKE_CURRENT_LIST_DIR}/runBrownianParallelTest.sh ${LIGGGHTS_EXECUTABLE}
-                $<TARGET_FILE:liggghtsColloid> ${CMAKE_CURRENT_BINARY_DIR}/brownianParallel)
-    set_tests_properties(dem.brownian.lubricatedPairsParallel PROPERTIES
-        TIMEOUT 120 LABELS "dem;agglomeration" PROCESSORS 2
-        PASS_REGULAR_EXPRESSION "PASS")
-endif()
+dem_liggghts_script_test(dem.brownian.lubricatedPairsParallel
+    ${CMAKE_CURRENT_LIST_DIR}/runBrownianParallelTest.sh ${CMAKE_CURRENT_BINARY_DIR}/brownianParallel
+    LABELS "dem;agglomeration")

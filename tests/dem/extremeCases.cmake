@@ -19,7 +19,6 @@ dem_gtest_cases(demExtremeTests dem. *
           extremeWallImpact extremeWallImpactLubricated
           extremeLowSaltForce extremeHighSaltForce)
 
-find_program(LIGGGHTS_EXECUTABLE liggghts)
 if(LIGGGHTS_EXECUTABLE)
     add_executable(demProcessTests
         liggghtsProcess.cpp

@@ -12,12 +12,6 @@ dem_gtest_cases(pairHydrodynamicsTests dem.pairHydrodynamics. pairHydrodynamics
 
 # The flow factor across a processor boundary: the stock liggghts with the
 # plugin preloaded, serial against 2 ranks (runPairFlowParallelTest.sh)
-find_program(LIGGGHTS_EXECUTABLE liggghts)
-if(LIGGGHTS_EXECUTABLE)
-    add_test(NAME dem.pairHydrodynamics.flowAcrossRanks
-        COMMAND ${CMAKE_CURRENT_LIST_DIR}/runPairFlowParallelTest.sh ${LIGGGHTS_EXECUTABLE}
-                $<TARGET_FILE:liggghtsColloid> ${CMAKE_CURRENT_BINARY_DIR}/pairFlowParallel)
-    set_tests_properties(dem.pairHydrodynamics.flowAcrossRanks PROPERTIES
-        TIMEOUT 120 LABELS "dem;agglomeration;errorVsCost" PROCESSORS 2
-        PASS_REGULAR_EXPRESSION "PASS")
-endif()
+dem_liggghts_script_test(dem.pairHydrodynamics.flowAcrossRanks
+    ${CMAKE_CURRENT_LIST_DIR}/runPairFlowParallelTest.sh ${CMAKE_CURRENT_BINARY_DIR}/pairFlowParallel
+    LABELS "dem;agglomeration;errorVsCost")
