@@ -47,6 +47,10 @@ const int maxIterations = 200;
 // a few iterations against (3n)^3/6 operations)
 const int maxDense = 4;
 
+// the largest lubricationExplicitRatio accepted: half the budget of each
+// particle's sum (fix_colloid_implicit.h), so that two candidates fit
+const double maxExplicitRatio = 0.25;
+
 // Weight of the end-of-step velocity in the drag K (u_f - v): 1/2, the
 // trapezoidal rule, second order for the particle's relaxation (backward
 // Euler lags it: 1 % at t = tau_S with dt = tau_S/27) and A-stable; the
@@ -170,16 +174,22 @@ FixColloidImplicit::FixColloidImplicit(LAMMPS *lmp, int narg, char **arg)
   integrated_(0),
   kT_(0.0),
   seed_(0),
+  explicitRatio_(0.0),
+  anyExplicit_(false),
+  commVectors_(true),
+  commWeakSum_(false),
   nSolves_(0),
   nIterations_(0),
   maxIterations_(0),
   nNotConverged_(0),
   seconds_(0.0),
-  nGlobalMembers_(0.0)
+  nGlobalMembers_(0.0),
+  nPairsSeen_(0.0),
+  nPairsExplicit_(0.0)
 {
-    comm_forward = 3;
+    comm_forward = 4;       // the liquid's velocity and the weak pairs' sum together
     vector_flag = 1;
-    size_vector = 6;
+    size_vector = 7;
     global_freq = 1;
     extvector = 0;
 }
@@ -199,6 +209,7 @@ void FixColloidImplicit::init()
         error->all(FLERR, "colloid/implicit needs per-particle masses (atom_style granular)");
     findDragProperties();
     findBrownianMotion();
+    findExplicitRatio();
     // the particles whose velocity an integrator updates; the others (a
     // fixed bed, say) keep theirs and act on their neighbours like walls
     integrated_ = 0;
@@ -280,6 +291,67 @@ void FixColloidImplicit::findBrownianMotion()
     seed_ = static_cast<unsigned long>(seed);
 }
 
+// The weak pairs' bound (fix_colloid_implicit.h), 0 without the property
+void FixColloidImplicit::findExplicitRatio()
+{
+    explicitRatio_ = 0.0;
+    Fix *P = modify->find_fix_property("lubricationExplicitRatio", "property/global", "scalar", 0, 0, style, false);
+    if (!P) return;
+    const double ratio = static_cast<FixPropertyGlobal *>(P)->compute_scalar();
+    if (!(ratio >= 0.0 && ratio <= maxExplicitRatio))
+    {
+        char msg[256];
+        snprintf(msg, sizeof(msg), "colloid/implicit: property lubricationExplicitRatio is %g; "
+                 "allowed range: 0 (every lubricated pair in the implicit solve) to %g "
+                 "(the largest c dt/m of a pair damped explicitly)", ratio, maxExplicitRatio);
+        error->all(FLERR, msg);
+    }
+    explicitRatio_ = ratio;
+}
+
+// A pair weak enough at both ends to be damped explicitly, if the sums of
+// both its particles allow it; both particles integrated
+bool FixColloidImplicit::weakCandidate(const PairTerm & t, double h) const
+{
+    const int *mask = atom->mask;
+    const double *m = atom->rmass;
+    return (mask[t.i] & integrated_) && (mask[t.j] & integrated_)
+        && t.c*h <= explicitRatio_*m[t.i] && t.c*h <= explicitRatio_*m[t.j];
+}
+
+// The weak pairs whose particles' sums S (weakSum_, ghosts' communicated)
+// are within the budget: their damping impulses over the step, from the
+// velocities at its start (the same impulse as the implicit residual's at
+// x = 0), into explicitImpulse_, and out of pairs_
+void FixColloidImplicit::dampWeakPairs(double h, bool flow, bool thermal, uint64_t pairKey)
+{
+    const int nlocal = atom->nlocal;
+    const int *tag = atom->tag;
+    double **v = atom->v;
+    explicitImpulse_.assign(3*nlocal, 0.0);
+    anyExplicit_ = false;
+    std::size_t kept = 0;
+    for (std::size_t at = 0; at < pairs_.size(); at++)
+    {
+        const PairTerm & t = pairs_[at];
+        if (!weakCandidate(t, h) || weakSum_[t.i] > explicitBudget || weakSum_[t.j] > explicitBudget)
+        {
+            pairs_[kept++] = t;
+            continue;
+        }
+        double rel = h*t.c*(dot3(t.n, v[t.i]) - dot3(t.n, v[t.j]));
+        if (flow && t.flow != 0.0)
+            rel -= h*t.c*t.flow*(dot3(t.n, &p_[3*t.i]) - dot3(t.n, &p_[3*t.j]));
+        if (thermal) rel -= pairThermalImpulse(pairKey, tag[t.i], tag[t.j], t.c, h);
+        for (int k = 0; k < 3; k++) explicitImpulse_[3*t.i + k] -= rel*t.n[k];
+        if (t.j < nlocal)
+            for (int k = 0; k < 3; k++) explicitImpulse_[3*t.j + k] += rel*t.n[k];
+        anyExplicit_ = true;
+        nPairsExplicit_++;
+    }
+    pairs_.resize(kept);
+}
+
 // The key of one solve's random numbers of one stream (the atoms' impulses
 // or the pairs' noise): a hash of the seed, the stream, the step number and
 // the kind of solve, so that a run gives the same numbers on any number of
@@ -358,6 +430,13 @@ double FixColloidImplicit::compute_vector(int n)
         case 2: return maxIterations_;
         case 3: return nNotConverged_;
         case 4: return seconds_;
+        case 6:
+        {
+            const double mine[2] = {nPairsSeen_, nPairsExplicit_};
+            double all[2] = {0.0, 0.0};
+            MPI_Allreduce(mine, all, 2, MPI_DOUBLE, MPI_SUM, world);
+            return all[0] > 0.0 ? all[1]/all[0] : 0.0;
+        }
         default:
         {
             double all = 0.0;
@@ -657,10 +736,22 @@ void FixColloidImplicit::solveSystem(double h, bool accumulateImpulse)
     foldPeriodicImages();
     const int nlocal = atom->nlocal;
     const int *mask = atom->mask;
-    int local[4] = {!pairs_.empty() || !walls_.empty(), 0, nWithoutDrag(), 0}, any[4] = {0, 0, 0, 0};
+    int local[5] = {!pairs_.empty() || !walls_.empty(), 0, nWithoutDrag(), 0, 0}, any[5] = {0, 0, 0, 0, 0};
     for (int i = 0; i < nlocal && !local[1]; i++) local[1] = !(mask[i] & integrated_);
     if (uf_) for (std::size_t at = 0; at < pairs_.size() && !local[3]; at++) local[3] = pairs_[at].flow != 0.0;
-    MPI_Allreduce(local, any, 4, MPI_INT, MPI_MAX, world);
+    // the weak pairs' candidates: each local atom's sum S of c h/m
+    if (explicitRatio_ > 0.0)
+    {
+        weakSum_.assign(nlocal + atom->nghost, 0.0);
+        for (const PairTerm & t : pairs_)
+        {
+            if (!weakCandidate(t, h)) continue;
+            local[4] = 1;
+            weakSum_[t.i] += t.c*h/atom->rmass[t.i];
+            if (t.j < nlocal) weakSum_[t.j] += t.c*h/atom->rmass[t.j];
+        }
+    }
+    MPI_Allreduce(local, any, 5, MPI_INT, MPI_MAX, world);
 
     // atoms inserted since the coupling set the drag: it sets theirs now,
     // on every rank (it may communicate), so that they feel the fluid from
@@ -699,6 +790,25 @@ void FixColloidImplicit::solveSystem(double h, bool accumulateImpulse)
         }
     }
 
+    // the liquid's velocity at every pair partner, ghosts too, for the
+    // pairs damped relative to a share of it (p_ is free until the solve),
+    // and the weak pairs' sums at ghosts, in one communication
+    if (any[3])
+        for (int i = 0; i < nlocal; i++)
+            for (int k = 0; k < 3; k++) p_[3*i + k] = uf[i][k];
+    if (any[3] || any[4])
+    {
+        commVectors_ = any[3];
+        commWeakSum_ = any[4];
+        comm->forward_comm_fix(this);
+        commVectors_ = true;
+        commWeakSum_ = false;
+    }
+    const uint64_t pairKey = thermal ? solveKey(pairStream, h) : 0;
+    anyExplicit_ = false;
+    nPairsSeen_ += pairs_.size();
+    if (any[4]) dampWeakPairs(h, any[3], thermal, pairKey);
+
     // the particles with a pair or wall term
     isCoupled_.assign(nlocal, 0);
     for (const PairTerm & t : pairs_)
@@ -723,7 +833,12 @@ void FixColloidImplicit::solveSystem(double h, bool accumulateImpulse)
             continue;
         }
         const double Ki = K ? K[i] : 0.0;
-        if (Ki == 0.0 && !fd) continue;     // no damping: f stays
+        if (Ki == 0.0 && !fd)       // no damping: f stays, with the weak pairs' damping
+        {
+            if (anyExplicit_)
+                for (int k = 0; k < 3; k++) f[i][k] += explicitImpulse_[3*i + k]*invH;
+            continue;
+        }
         const bool moves = mask[i] & integrated_;
         // 1/(m + h K/2) of a moving particle; 0 keeps v of one without
         // an integrator (its drag at v)
@@ -735,6 +850,7 @@ void FixColloidImplicit::solveSystem(double h, bool accumulateImpulse)
             double F = f[i][k] + Ki*slip;
             if (fd) F += fd[i][k];
             if (thermal) F += thermal_[3*i + k]*invH;
+            if (anyExplicit_) F += explicitImpulse_[3*i + k]*invH;
             f[i][k] = scale*F;
             // x = h F/m' : the drag with the trapezoidal weight, and its
             // random part
@@ -764,19 +880,11 @@ void FixColloidImplicit::solveSystem(double h, bool accumulateImpulse)
             double F = f[i][k];
             if (K) F += Ki*(uf[i][k] - v[i][k]);
             if (fd) F += fd[i][k];
-            r_[3*i + k] = h*F + (thermal ? thermal_[3*i + k] : 0.0);
+            r_[3*i + k] = h*F + (thermal ? thermal_[3*i + k] : 0.0)
+                        + (anyExplicit_ ? explicitImpulse_[3*i + k] : 0.0);
             x_[3*i + k] = 0.0;
         }
     }
-    // the liquid's velocity at every pair partner, ghosts too, for the
-    // pairs damped relative to a share of it (p_ is free until the solve)
-    if (any[3])
-    {
-        for (int i = 0; i < nlocal; i++)
-            for (int k = 0; k < 3; k++) p_[3*i + k] = uf[i][k];
-        comm->forward_comm_fix(this);
-    }
-    const uint64_t pairKey = thermal ? solveKey(pairStream, h) : 0;
     for (const PairTerm & t : pairs_)
     {
         double rel = h*t.c*(dot3(t.n, v[t.i]) - dot3(t.n, v[t.j]));
@@ -880,15 +988,23 @@ int FixColloidImplicit::pack_comm(int n, int *list, double *buf, int, int *)
 {
     int m = 0;
     for (int i = 0; i < n; i++)
-        for (int k = 0; k < 3; k++) buf[m++] = p_[3*list[i] + k];
-    return 3;
+    {
+        if (commVectors_)
+            for (int k = 0; k < 3; k++) buf[m++] = p_[3*list[i] + k];
+        if (commWeakSum_) buf[m++] = weakSum_[list[i]];
+    }
+    return (commVectors_ ? 3 : 0) + (commWeakSum_ ? 1 : 0);
 }
 
 void FixColloidImplicit::unpack_comm(int n, int first, double *buf)
 {
     int m = 0;
     for (int i = first; i < first + n; i++)
-        for (int k = 0; k < 3; k++) p_[3*i + k] = buf[m++];
+    {
+        if (commVectors_)
+            for (int k = 0; k < 3; k++) p_[3*i + k] = buf[m++];
+        if (commWeakSum_) weakSum_[i] = buf[m++];
+    }
 }
 
 double FixColloidImplicit::memory_usage()
@@ -896,7 +1012,8 @@ double FixColloidImplicit::memory_usage()
     return sizeof(PairTerm)*pairs_.capacity() + sizeof(WallTerm)*walls_.capacity()
          + sizeof(double)*(x_.capacity() + r_.capacity() + z_.capacity()
                            + p_.capacity() + q_.capacity() + blockA_.capacity()
-                           + blockInv_.capacity() + r0_.capacity() + thermal_.capacity())
+                           + blockInv_.capacity() + r0_.capacity() + thermal_.capacity()
+                           + weakSum_.capacity() + explicitImpulse_.capacity())
          + sizeof(int)*(parent_.capacity() + groupStart_.capacity() + pairStart_.capacity()
                         + groupMembers_.capacity() + groupPairs_.capacity() + fill_.capacity()
                         + boundaryMembers_.capacity() + boundaryPairs_.capacity()

@@ -67,12 +67,38 @@
    last (re-creating it at the end when fixes were added after it) so
    that its setup() also sees every wall's forces.
 
+   Weak pairs explicitly (property/global lubricationExplicitRatio, a
+   scalar from 0 to 0.25; 0 or absent: every pair in the solve): a pair
+   whose resistance is weak against both particles' masses, c h/m <= the
+   ratio at each end, is damped from the velocities at the start of the
+   step, -c n n^T (v_i - v_j - phi (u_f,i - u_f,j)) with its noise, like
+   a force, and leaves the solve, provided that the explicit candidates of
+   each of its two particles add up to S_i = sum c h/m_i <= 1/2. Why: the
+   two-sphere form (lubrication.H) couples every pair within a radius;
+   at 5 % solids the particles then form groups that span the domain, and
+   the solve of those groups was 40 % of the particle run (slot coater,
+   cut-off 0.15 um; README), while most of their pairs are far apart and
+   weak. Why it stays stable: with L_e the explicit pairs' matrix,
+   x^T h L_e x = h sum c (n.(x_i - x_j))^2 <= sum_i 2 S_i m_i |x_i|^2,
+   so h L_e <= M when every S_i <= 1/2, and the update
+   (M + h R_implicit + h K/2) v' = (M - h L_e - h K/2) v + ... then has
+   all its eigenvalues in [-1, 1] (the right-hand matrix lies between
+   minus and plus the left-hand one for the coupling's K h/m <= 1): no
+   growth, for any number of neighbours and with any implicit pairs
+   beside. The per-pair bound keeps the lag of the explicit damping small
+   (its error is of order c h/m); a state in force balance is still kept
+   exactly. Each rank decides a pair from c, both masses and both S (a
+   ghost's S by one forward communication, with the liquid's velocity),
+   so a pair across ranks is treated alike on both. Pairs with a particle
+   that no fix integrates stay in the solve.
+
    Statistics since the fix was created, as its global vector, e.g.
    "thermo_style custom step f_colloid_implicit[2]": [1] updates, [2] mean
    and [3] largest number of iterations, [4] updates that did not converge
    in 200 iterations (they warn once), [5] wall-clock seconds spent in the
    updates (this rank), [6] particles in the global solve per update (all
-   ranks together; 0 in serial with an atom map).
+   ranks together; 0 in serial with an atom map), [7] the share of the
+   lubricated pairs damped explicitly (all ranks, 0 to 1).
 
    Who attaches it: every pair style with a colloid cohesion model (at its
    init, before Modify's), and the CFD coupling (colloidImplicitUpdate()).
@@ -156,6 +182,9 @@ private:
     void findDragProperties();
     int nWithoutDrag() const;
     void findBrownianMotion();
+    void findExplicitRatio();
+    bool weakCandidate(const PairTerm & t, double h) const;
+    void dampWeakPairs(double h, bool flow, bool thermal, std::uint64_t pairKey);
     std::uint64_t solveKey(std::uint64_t stream, double h) const;
     void thermalImpulse(std::uint64_t key, int tag, double K, double h, double *R) const;
     double pairThermalImpulse(std::uint64_t key, int a, int b, double c, double h) const;
@@ -194,6 +223,18 @@ private:
     std::vector<double> thermal_;
     std::vector<int> wallsOf_;      // wall contacts of each atom so far
 
+    // weak pairs damped explicitly (see above): the largest c h/m at
+    // either end (0: off), the candidates' sum S of c h/m at each atom
+    // (ghosts too), the explicit pairs' impulses over the step [run
+    // units], 3 per local atom, and whether this solve has any
+    static constexpr double explicitBudget = 0.5;
+    double explicitRatio_;
+    std::vector<double> weakSum_, explicitImpulse_;
+    bool anyExplicit_;
+
+    // what pack_comm sends: p_ (3 per atom) and/or weakSum_ (1)
+    bool commVectors_, commWeakSum_;
+
     // step of the current solve [run units]
     double h_;
 
@@ -226,6 +267,7 @@ private:
     long nNotConverged_;
     double seconds_;                // wall-clock time of the updates [s]
     double nGlobalMembers_;         // this rank's members of the global solves
+    double nPairsSeen_, nPairsExplicit_;    // this rank's lubricated pairs, the explicit ones
 };
 
 }

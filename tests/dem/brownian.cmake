@@ -9,6 +9,7 @@ target_link_libraries(brownianTests PRIVATE liggghtsColloid GTest::gtest GTest::
 dem_gtest_cases(brownianTests dem.brownian. brownian
     TIMEOUT 300 LABELS "dem;agglomeration"
     CASES meanSquareDisplacement equipartition reproducible lubricatedPairDiffusion
+          lubricatedPairDiffusionExplicit
           lubricatedWallDiffusion)
 
 # Lubrication noise across a processor boundary: the stock liggghts with

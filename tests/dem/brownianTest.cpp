@@ -46,6 +46,10 @@
       2 D (t - tau (1 - exp(-t/tau))), D = k_B T/(K + c_w), tau =
       m/(K + c_w), within 5 % (sampling error 1.1 %); without the wall's
       noise it would be 29 times too small.
+    lubricatedPairDiffusionExplicit: the pairs' diffusion with
+      lubricationExplicitRatio 0.25, where each pair (c dt/m = 0.057) is
+      damped explicitly with its noise (fix_colloid_implicit.h): the same
+      reference and tolerance, and every pair explicit.
 \*---------------------------------------------------------------------------*/
 #include "liggghtsRun.H"
 #include "register_colloid_models.h"
@@ -155,8 +159,10 @@ void velocityVariance(LiggghtsRun& run, double dt, double& written, double& half
 }
 
 // pairs of lubricated spheres along x (lattice custom: a pair per point,
-// 1.5 um apart), with drag, at rest
-void lubricatedPairs(LiggghtsRun& run, double Rp, double h0, double dt, long seed)
+// 1.5 um apart), with drag, at rest; weak pairs damped explicitly below
+// c dt/m = explicitRatio (0: every pair in the implicit solve)
+void lubricatedPairs(LiggghtsRun& run, double Rp, double h0, double dt, long seed,
+                     double explicitRatio)
 {
     const double spacing = 1.5;
     std::ostringstream in;
@@ -171,7 +177,8 @@ void lubricatedPairs(LiggghtsRun& run, double Rp, double h0, double dt, long see
           "set group all diameter " << 2*Rp << " density " << rho << "\n"
           "velocity all set 0 0 0 units box\n"
        << lubrication(0.1, 0.05)
-       << "timestep " << dt << "\n"
+       << "fix l4 all property/global lubricationExplicitRatio scalar " << explicitRatio << "\n"
+          "timestep " << dt << "\n"
           "fix integrate all nve/sphere\n"
        << dragAndNoise(6*pi*mu*Rp, seed);
     run.commands(in.str());
@@ -276,7 +283,10 @@ TEST(brownian, reproducible)
 }
 
 
-TEST(brownian, lubricatedPairDiffusion)
+namespace
+{
+
+void lubricatedPairDiffusion(double explicitRatio)
 {
     const double Rp = 0.15, h0 = 0.005, hOut = 0.1;     // um
     const double dt = 1e-4;                             // us
@@ -288,7 +298,7 @@ TEST(brownian, lubricatedPairDiffusion)
                 c(h0)/Kp, mp/(Kp + 2*c(h0)));
 
     LiggghtsRun run;
-    lubricatedPairs(run, Rp, h0, dt, 20231);
+    lubricatedPairs(run, Rp, h0, dt, 20231, explicitRatio);
     const long n = run.nAtoms();
     ASSERT_EQ(n % 2, 0);
     // each pair: atoms 2k+1 (basis 0) and 2k+2 (basis 1), created point by
@@ -327,6 +337,21 @@ TEST(brownian, lubricatedPairDiffusion)
                 n/2, lag, msd, reference, 100*(msd/reference - 1),
                 reference*Kp/(Kp + 2*c(h0)));
     EXPECT_NEAR(msd, reference, 0.05*reference);
+    const double share = run.evaluate("f_colloid_implicit[7]");
+    std::printf("share of the pairs damped explicitly: %g\n", share);
+    EXPECT_EQ(share, explicitRatio > 0 ? 1.0 : 0.0);
+}
+
+} // namespace
+
+TEST(brownian, lubricatedPairDiffusion)
+{
+    lubricatedPairDiffusion(0);
+}
+
+TEST(brownian, lubricatedPairDiffusionExplicit)
+{
+    lubricatedPairDiffusion(0.25);
 }
 
 

@@ -8,10 +8,16 @@ target_link_libraries(pairHydrodynamicsTests PRIVATE liggghtsColloid colloidMode
 
 dem_gtest_cases(pairHydrodynamicsTests dem.pairHydrodynamics. pairHydrodynamics
     TIMEOUT 120 LABELS "dem;agglomeration;errorVsCost"
-    CASES forceDrivenApproach flowDrivenApproach)
+    CASES forceDrivenApproach flowDrivenApproach
+          forceDrivenApproachExplicit flowDrivenApproachExplicit)
 
 # The flow factor across a processor boundary: the stock liggghts with the
 # plugin preloaded, serial against 2 ranks (runPairFlowParallelTest.sh)
 dem_liggghts_script_test(dem.pairHydrodynamics.flowAcrossRanks
     ${CMAKE_CURRENT_LIST_DIR}/runPairFlowParallelTest.sh ${CMAKE_CURRENT_BINARY_DIR}/pairFlowParallel
     LABELS "dem;agglomeration;errorVsCost")
+
+# the same with the weak pairs damped explicitly (lubricationExplicitRatio)
+dem_liggghts_script_test(dem.pairHydrodynamics.flowAcrossRanksExplicit
+    ${CMAKE_CURRENT_LIST_DIR}/runPairFlowParallelTest.sh ${CMAKE_CURRENT_BINARY_DIR}/pairFlowParallelExplicit
+    EXTRA_ARGS 0.25 LABELS "dem;agglomeration;errorVsCost;stiff")

@@ -30,6 +30,19 @@
       alone (the flow factor dropped) the pair closes at G instead of
       1 - A and takes 90 % longer; the near-field form takes 47 % longer.
       Both fail.
+
+    forceDrivenApproachExplicit, flowDrivenApproachExplicit: the same
+      pair with lubricationExplicitRatio 0.25 (weak pairs damped
+      explicitly, fix_colloid_implicit.h) at a step where c dt/m is at
+      most 0.2 down to a/50, so that the pair is damped explicitly at
+      every step (the update's share of explicit pairs must be 1): under
+      F = 0.1 nN, and in E = 1 1/us, the approach takes 650 and 69 Stokes
+      times, so inertia counts (about 1 %) and the reference is the
+      pair's equation of motion, integrated in the test (RK4):
+          dh/dt = w,  m dw/dt = (K/G) ((1 - A) du - w)   (flow, du = -E r a)
+                      m dw/dt = -2 F - (K/G) w            (force),
+      K/G = K + 2c the pair's whole resistance to relative motion, w = 0
+      at the start; the DEM's time to a/50 within 1 % of it.
 \*---------------------------------------------------------------------------*/
 #include "hydrodynamicMobility.H"
 #include "liggghtsRun.H"
@@ -74,8 +87,9 @@ double simpson(const std::function<double(double)>& f, double x0, double x1, int
 }
 
 // The pair at gap hStart on the x axis, symmetric about 0, with the
-// two-sphere lubrication, drag into liquid at rest and step dt [us]
-void setUp(LiggghtsRun& run, double dt, const std::string& extra)
+// two-sphere lubrication, drag into liquid at rest and step dt [us];
+// explicitRatio > 0: weak pairs damped explicitly
+void setUp(LiggghtsRun& run, double dt, const std::string& extra, double explicitRatio = 0)
 {
     std::ostringstream in;
     in.precision(17);
@@ -88,6 +102,7 @@ void setUp(LiggghtsRun& run, double dt, const std::string& extra)
           "fix l3 all property/global lubricationOuterCutoff scalar " << 10*a << "\n"
           "fix l4 all property/global lubricationFade scalar 1\n"
           "fix l5 all property/global lubricationFarField scalar 1\n"
+          "fix l6 all property/global lubricationExplicitRatio scalar " << explicitRatio << "\n"
           "neighbor 0.1 bin\n"
           "neigh_modify delay 0\n"
           "pair_style gran model walton_braun tangential history cohesion colloid/lub timeStepCheck off\n"
@@ -121,6 +136,55 @@ double timeToEndGap(LiggghtsRun& run, double dt, double tMax, const std::functio
         gOld = g;
     }
     return -1;
+}
+
+// The liquid at both particles in uniaxial compression along x at the
+// strain rate E [1/us]: u_f = E (-x, y/2, z/2)
+void setCompression(LiggghtsRun& run, double E)
+{
+    LAMMPS_NS::Modify* modify = run.instance()->modify;
+    LAMMPS_NS::Fix* uf = modify->fix[modify->find_fix("uf")];
+    for (int id = 1; id <= 2; id++)
+    {
+        const double* x = run.x(id);
+        double* u = uf->array_atom[run.instance()->atom->map(id)];
+        u[0] = -E*x[0];
+        u[1] = 0.5*E*x[1];
+        u[2] = 0.5*E*x[2];
+    }
+}
+
+// The time [us] for the pair's equation of motion (header) to close from
+// hStart to hEnd, by RK4 with n steps of dtau over at most tMax: accel(h, w)
+// is dw/dt
+double inertialApproachTime(const std::function<double(double, double)>& accel, double tMax)
+{
+    const int n = 400000;
+    const double dtau = tMax/n;
+    double h = hStart, w = 0, t = 0;
+    for (int s = 0; s < n; s++)
+    {
+        const double k1h = w, k1w = accel(h, w);
+        const double k2h = w + 0.5*dtau*k1w, k2w = accel(h + 0.5*dtau*k1h, w + 0.5*dtau*k1w);
+        const double k3h = w + 0.5*dtau*k2w, k3w = accel(h + 0.5*dtau*k2h, w + 0.5*dtau*k2w);
+        const double k4h = w + dtau*k3w, k4w = accel(h + dtau*k3h, w + dtau*k3w);
+        const double hNew = h + dtau*(k1h + 2*k2h + 2*k3h + k4h)/6;
+        w += dtau*(k1w + 2*k2w + 2*k3w + k4w)/6;
+        if (hNew <= hEnd) return t + dtau*(h - hEnd)/(h - hNew);
+        h = hNew;
+        t += dtau;
+    }
+    return -1;
+}
+
+const double mass = rho*4.0/3.0*pi*a*a*a;      // pg
+
+// the step at which c dt/m is 0.2 at hEnd (c = K (1/G - 1)/2 grows as the
+// gap closes; the fade is 1 below 5 a)
+double explicitStep()
+{
+    const double cEnd = 0.5*K*(1/honigG(hEnd/a) - 1);
+    return 0.2*mass/cEnd;
 }
 
 } // namespace
@@ -157,24 +221,59 @@ TEST(pairHydrodynamics, flowDrivenApproach)
     const double dt = T/20000;
     LiggghtsRun run;
     setUp(run, dt, "");
-    LAMMPS_NS::Modify* modify = run.instance()->modify;
-    LAMMPS_NS::Fix* uf = modify->fix[modify->find_fix("uf")];
-    // the liquid at both particles: u_f = E (-x, y/2, z/2)
-    auto update = [&]()
-    {
-        for (int id = 1; id <= 2; id++)
-        {
-            const double* x = run.x(id);
-            double* u = uf->array_atom[run.instance()->atom->map(id)];
-            u[0] = -E*x[0];
-            u[1] = 0.5*E*x[1];
-            u[2] = 0.5*E*x[2];
-        }
-    };
-    const double t = timeToEndGap(run, dt, 2*T, update);
+    const double t = timeToEndGap(run, dt, 2*T, [&]() { setCompression(run, E); });
     std::cout << "time from h = a to a/50 in uniaxial compression: DEM " << t
               << " us, Batchelor & Green's 1 - A " << T << " us, relative difference "
               << (t - T)/T << std::endl;
     ASSERT_GT(t, 0) << "the gap did not reach a/50";
     EXPECT_NEAR(t, T, 0.01*T);
+}
+
+
+TEST(pairHydrodynamics, forceDrivenApproachExplicit)
+{
+    const double F = 0.1;           // nN, each sphere
+    const double T = inertialApproachTime([F](double h, double w)
+    {
+        return (-2*F - K/honigG(h/a)*w)/mass;
+    }, 100.0);
+    const double dt = explicitStep();
+    LiggghtsRun run;
+    setUp(run, dt,
+        "group first id 1\n"
+        "group second id 2\n"
+        "fix pull1 first addforce " + std::to_string(F) + " 0 0\n"
+        "fix pull2 second addforce " + std::to_string(-F) + " 0 0\n", 0.25);
+    const double t = timeToEndGap(run, dt, 2*T, [] {});
+    const double share = run.evaluate("f_colloid_implicit[7]");
+    std::cout << "time from h = a to a/50 under F, damped explicitly (" << T/dt << " steps, share "
+              << share << "): DEM " << t << " us, the equation of motion " << T
+              << " us, relative difference " << (t - T)/T << std::endl;
+    ASSERT_GT(T, 0) << "the reference did not reach a/50";
+    ASSERT_GT(t, 0) << "the gap did not reach a/50";
+    EXPECT_NEAR(t, T, 0.01*T);
+    EXPECT_EQ(share, 1.0) << "pairs left in the implicit solve";
+}
+
+
+TEST(pairHydrodynamics, flowDrivenApproachExplicit)
+{
+    const double E = 1.0;           // 1/us, strain rate
+    const double T = inertialApproachTime([E](double h, double w)
+    {
+        const double du = -E*(2*a + h);
+        return K/honigG(h/a)*(colloid::mobility::twoSpheresInFlow(h/a)*du - w)/mass;
+    }, 100.0);
+    const double dt = explicitStep();
+    LiggghtsRun run;
+    setUp(run, dt, "", 0.25);
+    const double t = timeToEndGap(run, dt, 2*T, [&]() { setCompression(run, E); });
+    const double share = run.evaluate("f_colloid_implicit[7]");
+    std::cout << "time from h = a to a/50 in uniaxial compression, damped explicitly (" << T/dt
+              << " steps, share " << share << "): DEM " << t << " us, the equation of motion " << T
+              << " us, relative difference " << (t - T)/T << std::endl;
+    ASSERT_GT(T, 0) << "the reference did not reach a/50";
+    ASSERT_GT(t, 0) << "the gap did not reach a/50";
+    EXPECT_NEAR(t, T, 0.01*T);
+    EXPECT_EQ(share, 1.0) << "pairs left in the implicit solve";
 }

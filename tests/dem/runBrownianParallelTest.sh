@@ -83,16 +83,10 @@ variable        global equal f_colloid_implicit[6]
 print           "global solve: ${global} particles"
 SCRIPT
 
+source "$(dirname "$0")/liggghtsScriptRun.sh"
 run()   # ranks boundary-x data output
 {
-    local vars=(-var ranks "$1" -var bx "$2" -var data "$3" -var out "$4")
-    if [ "$1" = 1 ]
-    then
-        LD_PRELOAD="$plugin" "$liggghts" -in in.pairs "${vars[@]}" -log "log.$4.1" > "screen.$4.1" 2>&1
-    else
-        LD_PRELOAD="$plugin" mpirun -np 2 -x LD_PRELOAD "$liggghts" -in in.pairs "${vars[@]}" \
-            -log "log.$4.2" > "screen.$4.2" 2>&1
-    fi || { echo "FAIL: the run $4 on $1 rank(s)"; tail -20 "screen.$4.$1"; exit 1; }
+    runLiggghts "$1" in.pairs "$4" -var bx "$2" -var data "$3" -var out "$4"
 }
 globalSolve()   # log: the statistic printed at the end
 {

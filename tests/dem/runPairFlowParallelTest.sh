@@ -13,12 +13,19 @@
 # from 50 nm to 32.7 nm in 10 us (the near-field form: to 37.2 nm); with
 # the communication left out, the pairs across the boundary close to
 # 36.5 nm only, and the test fails.
+# With a fourth argument, lubricationExplicitRatio (weak pairs damped
+# explicitly, fix_colloid_implicit.h), the same at a tenth of the step
+# (c dt/m at most 0.15), where every pair is damped explicitly (the
+# update's share must be 1; without it, 0): the explicit damping needs the
+# liquid's velocity and the weak pairs' sums at ghost partners.
 #
-#   runPairFlowParallelTest.sh liggghts plugin.so workDir
+#   runPairFlowParallelTest.sh liggghts plugin.so workDir [explicitRatio]
 set -e
 liggghts=$1
 plugin=$2
 work=$3
+explicitRatio=${4:-0}
+if [ "$explicitRatio" = 0 ]; then dt=0.01; steps=1000; else dt=0.001; steps=10000; fi
 mkdir -p "$work"
 cd "$work"
 rm -f positions.* flow.*
@@ -58,33 +65,36 @@ fix l2 all property/global lubricationInnerCutoff scalar 0.001
 fix l3 all property/global lubricationOuterCutoff scalar 0.5
 fix l4 all property/global lubricationFade scalar 1
 fix l5 all property/global lubricationFarField scalar 1
+fix l6 all property/global lubricationExplicitRatio scalar ${explicitRatio}
 neighbor        0.05 bin
 neigh_modify    delay 0
 pair_style      gran model walton_braun tangential history cohesion colloid/lub timeStepCheck off
 pair_coeff      * *
-timestep        0.01
+timestep        ${dt}
 fix integrate all nve/sphere
 # Stokes drag 6 pi mu R (pg/us) towards the liquid's velocity
 fix Ksl all property/atom Ksl scalar yes no no 2.827433388230814
 fix uf all property/atom uf vector yes no no 0 0 0
 run             0
 include         flow.in
-run             1000
+run             ${steps}
+variable        share equal f_colloid_implicit[7]
+print           "explicit share ${share}"
 write_dump      all custom positions.${ranks} id x y z modify sort id format "%d %.15g %.15g %.15g"
 SCRIPT
 
-run()   # ranks
-{
-    if [ "$1" = 1 ]
-    then
-        LD_PRELOAD="$plugin" "$liggghts" -in in.pairs -var ranks 1 -log log.1 > screen.1 2>&1
-    else
-        LD_PRELOAD="$plugin" mpirun -np 2 -x LD_PRELOAD "$liggghts" -in in.pairs -var ranks 2 \
-            -log log.2 > screen.2 2>&1
-    fi || { echo "FAIL: the run on $1 rank(s)"; tail -20 "screen.$1"; exit 1; }
-}
-run 1
-run 2
+source "$(dirname "$0")/liggghtsScriptRun.sh"
+for ranks in 1 2
+do
+    runLiggghts $ranks in.pairs pairs -var explicitRatio "$explicitRatio" -var dt $dt -var steps $steps
+done
+wanted=$([ "$explicitRatio" = 0 ] && echo 0 || echo 1)
+for n in 1 2
+do
+    share=$(awk '/^explicit share/ { print $3 }' "log.pairs.$n")
+    echo "explicit share on $n rank(s): $share"
+    [ "$share" = "$wanted" ] || { echo "FAIL: explicit share $share on $n rank(s), wanted $wanted"; exit 1; }
+done
 
 # each pair's gap (ids 2m - 1 and 2m), in both runs
 awk 'FNR == 1 { file++; on = 0 }

@@ -11,4 +11,12 @@ dem_gtest_cases(stiffTests dem.stiff. stiff
     CASES lubricatedCluster13 lubricatedClusterAcrossPeriodicFace lubricatedSmallGroups
           lubricatedBlock108OnWall vdwCluster13 vdwBlock108OnWall
           compressedRandomPacking pinnedBetweenWalls approachAtStokesTime
-          dragRelaxation movingWallLubrication)
+          dragRelaxation movingWallLubrication
+          weakPairsExplicitOpenBlock weakPairsExplicitMixedBlock weakPairsExplicitDenseBlock)
+
+# The weak pairs damped explicitly across a processor boundary: the stock
+# liggghts with the plugin preloaded, serial against 2 ranks
+# (runWeakPairsParallelTest.sh)
+dem_liggghts_script_test(dem.stiff.weakPairsAcrossRanks
+    ${CMAKE_CURRENT_LIST_DIR}/runWeakPairsParallelTest.sh ${CMAKE_CURRENT_BINARY_DIR}/weakPairsParallel
+    LABELS "dem;stiff")

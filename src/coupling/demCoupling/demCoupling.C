@@ -2018,8 +2018,9 @@ void Foam::demCoupling::write
                 << ", not converged " << dem.sumFixVector("colloid/implicit", 3)
                 << "; " << dem.sumFixVector("colloid/implicit", 4) << " s; "
                 << dem.sumFixVector("colloid/implicit", 5)
-                << " particles in the solve across ranks per update"
-                << endl;
+                << " particles in the solve across ranks per update; "
+                << dem.sumFixVector("colloid/implicit", 6)
+                << " of the lubricated pairs damped explicitly" << endl;
         }
     }
     catch (const std::exception& e)
