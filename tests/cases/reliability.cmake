@@ -69,7 +69,7 @@ set_tests_properties(case.reliability.diskFull PROPERTIES
     TIMEOUT 180 LABELS "case;reliability" SKIP_RETURN_CODE 77
     FIXTURES_REQUIRED slotCoater_serial)
 
-foreach(probe nuZero cutoffFormTypo lubricationFormTypo notConverged fillTooDense rerunAfterFailure
+foreach(probe nuZero cutoffFormTypo lubricationFormTypo explicitRatioTooLarge notConverged fillTooDense rerunAfterFailure
               shortEndTimeParallel resumeAfterKill demStepTooLong)
     add_test(NAME case.reliability.allrun.${probe}
         COMMAND ${reliabilityDir}/runAllrunProbeTest.sh ${probe}

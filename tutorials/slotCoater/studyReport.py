@@ -485,7 +485,7 @@ def write_milestones(cases, resultsDir):
 # same case at other numerical settings (softer contacts at twice the DEM
 # step; the colloid cut-offs at 0.025 or 0.1 um) or with the two-sphere
 # hydrodynamics, compared with it in results/variants.md
-VARIANT_SUFFIXES = ("SoftContacts", "TwoSphere", "ShortRange", "LongRange")
+VARIANT_SUFFIXES = ("SoftContacts", "TwoSphere", "Explicit", "ShortRange", "LongRange")
 
 
 def write_variants(cases, resultsDir):

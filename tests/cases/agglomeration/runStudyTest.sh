@@ -31,7 +31,11 @@
 # (written for the DEM: lubricationFarField 1, 0.15 um), the other
 # cut-offs and the soft variant's settings kept, its variants.md row;
 # TwoSphere before SoftContacts, and a cut-off suffix after TwoSphere,
-# refused.  A -resume of the soft variant to 4e-8 s
+# refused.  Its numerical variant ...TwoSphereExplicit for one step:
+# lubricationExplicitRatio 0.25 (written for the DEM), the rest as the
+# two-sphere case, the solver's log naming the share of pairs damped
+# explicitly, its variants.md row beside the two-sphere case; Explicit
+# before TwoSphere refused.  A -resume of the soft variant to 4e-8 s
 # reaches it with the set-up's lines still in the study log.
 #
 # usage: runStudyTest.sh workDir
@@ -76,6 +80,9 @@ refused isoelectricLongRangeShortRange isoelectricLongRangeShortRange
 # the model's suffix goes after SoftContacts, and no cut-off suffix after it
 refused isoelectricTwoSphereSoftContacts isoelectricTwoSphereSoftContacts
 refused isoelectricTwoSphereShortRange isoelectricTwoSphereShortRange
+refused isoelectricTwoSphereExplicitShortRange isoelectricTwoSphereExplicitShortRange
+# the explicit damping's suffix goes after TwoSphere
+refused isoelectricExplicitTwoSphere isoelectricExplicitTwoSphere
 [ ! -d study ] || fail "a case was set up before the unknown one was refused"
 
 ./Allstudy -endTime 2e-8 isoelectricBrownianSlowWeb > allstudy.out 2>&1 \
@@ -164,6 +171,24 @@ done
 [ "$(value $two/system/slotCoaterParameters contactStiffness)" = 0.25 ] || fail "two-sphere: contactStiffness"
 [ "$(value $two/system/slotCoaterParameters webSpeed)" = 0.1 ] || fail "two-sphere: webSpeed"
 [ -f $two/2e-08/uniform/colloidCoupling ] || fail "the two-sphere run did not reach 2e-08"
+grep -q "^variable lubricationExplicitRatio equal 0$" $two/DEM/slotCoater.liggghts \
+    || fail "two-sphere: every pair in the solve not written for the DEM"
+
+# its numerical variant: the weak pairs damped explicitly, all else kept
+./Allstudy -endTime 2e-8 isoelectricBrownianSlowWebSoftContactsTwoSphereExplicit > explicit.out 2>&1 \
+    || { cat explicit.out; tail -20 ${two}Explicit.log; fail "Allstudy explicit"; }
+explicit=${two}Explicit
+[ "$(value $explicit/system/slotCoaterParameters lubricationExplicitRatio)" = 0.25 ] || fail "explicit: the ratio"
+[ "$(value $explicit/system/slotCoaterParameters lubricationForm)" = twoSphere ] || fail "explicit: lubricationForm"
+[ "$(value $explicit/system/slotCoaterParameters lubricationOuterCutoff)" = 0.15e-6 ] || fail "explicit: the cut-off"
+[ "$(value $explicit/system/slotCoaterParameters contactStiffness)" = 0.25 ] || fail "explicit: contactStiffness"
+grep -q "^variable lubricationExplicitRatio equal 0.25$" $explicit/DEM/slotCoater.liggghts \
+    || fail "explicit: the ratio not written for the DEM"
+grep -Eq "^Implicit update of lubrication and drag: .* ([0-9.e-]+) of the lubricated pairs damped explicitly" \
+    $explicit/log.colloidDEMFoam || fail "explicit: no share in the solver's log"
+share=$(sed -n 's/^Implicit update of lubrication and drag: .*; \(.*\) of the lubricated pairs damped explicitly$/\1/p' \
+    $explicit/log.colloidDEMFoam | tail -1)
+awk -v s="$share" 'BEGIN { exit !(s > 0 && s <= 1) }' || fail "explicit: share $share of the pairs damped explicitly"
 
 if ./Allstudy -endTime 2e-8 isoelectricBrownianSlowWeb > again.out 2>&1
 then
@@ -192,6 +217,8 @@ grep -q "^| isoelectricBrownianSlowWebSoftContacts | ShortRange | 0.02 | 0 / 0 |
     || { cat results/variants.md; fail "short range's variants row"; }
 grep -q "^| isoelectricBrownianSlowWebSoftContacts | TwoSphere | 0.02 | 0 / 0 | 0 | 0 / 0 | 0 | 0 |" results/variants.md \
     || { cat results/variants.md; fail "two-sphere variants row"; }
+grep -q "^| isoelectricBrownianSlowWebSoftContactsTwoSphere | Explicit | 0.02 | 0 / 0 | 0 | 0 / 0 | 0 | 0 |" results/variants.md \
+    || { cat results/variants.md; fail "explicit variants row"; }
 
 # a resume continues the run and keeps the study log of its set-up
 ./Allstudy -resume -endTime 4e-8 isoelectricBrownianSlowWebSoftContacts > resume.out 2>&1 \

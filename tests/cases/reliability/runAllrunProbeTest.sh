@@ -14,6 +14,8 @@
 #                     the two forms allowed
 #   lubricationFormTypo  lubricationForm twoSpheres (for twoSphere): stops
 #                     likewise, naming the two forms allowed
+#   explicitRatioTooLarge  lubricationExplicitRatio 0.3: stops likewise,
+#                     naming the closed range 0 to 0.25
 #   notConverged      20 iterations of the steady flow (endTime of
 #                     system/controlDict.steadyFlow): it does not converge;
 #                     stops saying so, no particle run
@@ -90,6 +92,12 @@ cutoffFormTypo)
 lubricationFormTypo)
     setParam lubricationForm twoSpheres
     expectFailure "system/slotCoaterParameters: keyword 'lubricationForm' is 'twoSpheres'; allowed: nearField or twoSphere"
+    [ ! -e log.blockMesh ] || fail "blockMesh was run"
+    noParticleRun ;;
+
+explicitRatioTooLarge)
+    setParam lubricationExplicitRatio 0.3
+    expectFailure "system/slotCoaterParameters: keyword 'lubricationExplicitRatio' is 0.3; allowed range: 0 <= lubricationExplicitRatio <= 0.25"
     [ ! -e log.blockMesh ] || fail "blockMesh was run"
     noParticleRun ;;
 
