@@ -144,8 +144,9 @@ add_study_report_test(studyMilestones testStudyMilestones.py 30)
 add_study_report_test(studyCost testStudyCost.py 30)
 
 # agglomeration.study: the study's driver on a copy of the slot coater (one
-# case, two coupling steps at the study's size, and its SoftContacts
-# variant, one coupling step) and its report (runStudyTest.sh)
+# case, two coupling steps at the study's size, and its variants, one
+# coupling step each: SoftContacts, ShortRange, TwoSphere, Explicit) and
+# its report (runStudyTest.sh); about 4 minutes on 2 cores
 add_test(NAME case.agglomeration.study
     COMMAND ${agglomerationDir}/runStudyTest.sh ${agglomerationWork}/study)
 set_tests_properties(case.agglomeration.study PROPERTIES

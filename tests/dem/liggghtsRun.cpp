@@ -106,6 +106,21 @@ std::string LiggghtsRun::waltonBraunMaterials()
         "fix m3 all property/global coefficientFriction peratomtypepair 2 0.3 0.3 0.3 0.3\n";
 }
 
+std::string LiggghtsRun::twoSphereLubrication(double hIn, double hOut, double explicitRatio)
+{
+    std::ostringstream in;
+    in.precision(17);
+    in << "fix l2 all property/global lubricationInnerCutoff scalar " << hIn << "\n"
+          "fix l3 all property/global lubricationOuterCutoff scalar " << hOut << "\n"
+          "fix l4 all property/global lubricationFade scalar 1\n"
+          "fix l5 all property/global lubricationFarField scalar 1\n"
+          "fix l6 all property/global lubricationExplicitRatio scalar " << explicitRatio << "\n"
+          "neighbor 0.1 bin\n"
+          "neigh_modify delay 0\n"
+          "pair_style gran model walton_braun tangential history cohesion colloid/lub timeStepCheck off\n"
+          "pair_coeff * *\n";
+    return in.str();
+}
 
 std::string LiggghtsRun::header(double halfBox, const std::string& boundary)
 {

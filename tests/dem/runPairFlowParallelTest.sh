@@ -25,7 +25,7 @@ liggghts=$1
 plugin=$2
 work=$3
 explicitRatio=${4:-0}
-if [ "$explicitRatio" = 0 ]; then dt=0.01; steps=1000; else dt=0.001; steps=10000; fi
+if awk -v r="$explicitRatio" 'BEGIN { exit !(r + 0 == 0) }'; then dt=0.01; steps=1000; else dt=0.001; steps=10000; fi
 mkdir -p "$work"
 cd "$work"
 rm -f positions.* flow.*
@@ -88,7 +88,7 @@ for ranks in 1 2
 do
     runLiggghts $ranks in.pairs pairs -var explicitRatio "$explicitRatio" -var dt $dt -var steps $steps
 done
-wanted=$([ "$explicitRatio" = 0 ] && echo 0 || echo 1)
+wanted=$(awk -v r="$explicitRatio" 'BEGIN { print (r + 0 == 0) ? 0 : 1 }')
 for n in 1 2
 do
     share=$(awk '/^explicit share/ { print $3 }' "log.pairs.$n")

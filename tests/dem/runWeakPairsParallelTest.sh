@@ -3,11 +3,12 @@
 # fix_colloid_implicit.h) across a processor boundary, serial against 2
 # ranks: the 108-particle FCC block of the stiff test
 # weakPairsExplicitMixedBlock (0.3 um spheres, nearest gaps 0.2 um, the
-# two-sphere form faded at 0.3 um, c dt/m 0.06 for the nearest pairs, no
-# drag, random velocities), centred on the boundary x = 0 of
-# 'processors 2 1 1'.  An inner particle's twelve pairs add up to 0.72
-# and stay in the solve; pairs between particles of the surface go
-# explicit; a pair is explicit only if both particles' sums are within
+# two-sphere form to 0.4 um (the fade starts beyond the nearest gap, the
+# next neighbours are 0.41 um apart), c dt/m 0.058 for the nearest pairs,
+# no drag, random velocities), centred on the boundary x = 0 of
+# 'processors 2 1 1'.  Nine pairs add up to 0.52: an inner particle's
+# stay in the solve; pairs between particles of the surface with at most
+# eight neighbours each go explicit; a pair is explicit only if both particles' sums are within
 # 1/2, so a pair across the boundary needs its ghost's sum, which the
 # update communicates.  Both runs must mix explicit and implicit pairs
 # (the shares differ: a pair across ranks counts on both) and agree in
@@ -46,11 +47,11 @@ awk 'BEGIN {
     for (m = 1; m <= n; m++) print vel[m] " 0 0 0" > "block.data"
 }'
 
-# c dt/m = 0.06 at the nearest gap 0.2 um: c = 3 pi mu R (1/G - 1),
+# c dt/m = 0.058 at the nearest gap 0.2 um: c = 3 pi mu R (1/G - 1),
 # G(u) = (6u^2 + 4u)/(6u^2 + 13u + 2) at u = 4/3
 dt=$(awk 'BEGIN { pi = atan2(0, -1); R = 0.15; u = 0.2/R
                   G = (6*u*u + 4*u)/(6*u*u + 13*u + 2); c = 3*pi*R*(1/G - 1)
-                  m = 2.5*4/3*pi*R^3; printf "%.12g", 0.06*m/c }')
+                  m = 2.5*4/3*pi*R^3; printf "%.12g", 0.058*m/c }')
 
 cat > in.block <<'SCRIPT'
 units           micro
@@ -66,7 +67,7 @@ fix m2 all property/global coefficientRestitution peratomtypepair 2 0.5 0.5 0.5 
 fix m3 all property/global coefficientFriction peratomtypepair 2 0.3 0.3 0.3 0.3
 fix l1 all property/global liquidViscosity scalar 1.0
 fix l2 all property/global lubricationInnerCutoff scalar 0.001
-fix l3 all property/global lubricationOuterCutoff scalar 0.3
+fix l3 all property/global lubricationOuterCutoff scalar 0.4
 fix l4 all property/global lubricationFade scalar 1
 fix l5 all property/global lubricationFarField scalar 1
 fix l6 all property/global lubricationExplicitRatio scalar 0.25

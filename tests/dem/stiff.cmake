@@ -12,7 +12,8 @@ dem_gtest_cases(stiffTests dem.stiff. stiff
           lubricatedBlock108OnWall vdwCluster13 vdwBlock108OnWall
           compressedRandomPacking pinnedBetweenWalls approachAtStokesTime
           dragRelaxation movingWallLubrication
-          weakPairsExplicitOpenBlock weakPairsExplicitMixedBlock weakPairsExplicitDenseBlock)
+          weakPairsExplicitOpenBlock weakPairsExplicitMixedBlock weakPairsExplicitDenseBlock
+          weakPairsExplicitUnequalMasses)
 
 # The weak pairs damped explicitly across a processor boundary: the stock
 # liggghts with the plugin preloaded, serial against 2 ranks

@@ -624,21 +624,23 @@ namespace
 
 // Weak pairs damped explicitly (lubricationExplicitRatio, fix_colloid_
 // implicit.h) in a 108-particle FCC block, lubrication only, two-sphere
-// form (faded at hOutFar), no drag, at the step where c dt/m of the nearest
-// pairs (gap `gap`) is `nearestRatio`, with lubricationExplicitRatio
-// `explicitRatio` (0: every pair in the solve). Returns the share of the
-// update's pairs damped explicitly, and the half-step velocities at the
-// end in `velocities` [um/us]; asserts that the kinetic energy of the
-// half-step velocities never grows (with every particle's sum of explicit
-// c dt/m at most 1/2, the update contracts them in the mass norm), that no
-// gap closes and that the relative motion is damped.
+// form (faded at hOutFar, at least twice the gap), no drag, at the step
+// where c dt/m of the nearest pairs (gap `gap`) is `nearestRatio`, with
+// lubricationExplicitRatio `explicitRatio` (0: every pair in the solve).
+// Returns the share of the update's pairs damped explicitly, and the
+// half-step velocities at the end in `velocities` [um/us]; asserts that
+// the kinetic energy of the half-step velocities never grows (with every
+// particle's sum of explicit c dt/m at most 1/2, the update contracts them
+// in the mass norm), that no gap closes and that the relative motion is
+// damped.
 double weakPairsBlock(double gap, double hOutFar, double nearestRatio, int nSteps,
                       double explicitRatio = 0.25, std::vector<double>* velocities = nullptr)
 {
     Scene s;
     s.centres = fccBlock(gap, 0, 1);
     const double m = rho*4.0/3.0*pi*R*R*R;
-    // c = K (1/G - 1)/2 at u = gap/R (G: Honig et al.; no fade at half the cut-off)
+    // c = K (1/G - 1)/2 at u = gap/R (G: Honig et al.; uncut: the fade
+    // starts at half the cut-off)
     const double u = gap/R;
     const double G = (6*u*u + 4*u)/(6*u*u + 13*u + 2);
     const double c = 0.5*6*pi*mu*R*(1/G - 1);
@@ -646,16 +648,8 @@ double weakPairsBlock(double gap, double hOutFar, double nearestRatio, int nStep
     std::ostringstream in;
     in.precision(17);
     in << LiggghtsRun::header(2.5) << contactAndLiquid()
-       << "fix l2 all property/global lubricationInnerCutoff scalar " << hIn << "\n"
-          "fix l3 all property/global lubricationOuterCutoff scalar " << hOutFar << "\n"
-          "fix l4 all property/global lubricationFade scalar 1\n"
-          "fix l5 all property/global lubricationFarField scalar 1\n"
-          "fix l6 all property/global lubricationExplicitRatio scalar " << explicitRatio << "\n"
-          "neighbor 0.1 bin\n"
-          "neigh_modify delay 0\n"
-          "pair_style gran model walton_braun tangential history cohesion colloid/lub timeStepCheck off\n"
-          "pair_coeff * *\n"
-          "timestep " << dt << "\n"
+       << LiggghtsRun::twoSphereLubrication(hIn, hOutFar, explicitRatio)
+       << "timestep " << dt << "\n"
           "fix integrate all nve/sphere\n";
     for (const Point& p : s.centres)
         in << "create_atoms 1 single " << p[0] << ' ' << p[1] << ' ' << p[2] << " units box\n";
@@ -698,39 +692,72 @@ double weakPairsBlock(double gap, double hOutFar, double nearestRatio, int nStep
     return share;
 }
 
+// The share of the pairs of the block (nearest gap `gap`, no other pair
+// within the cut-off hOutFar) that go explicit when each nearest pair has
+// c dt/m = ratio: both particles with at most 1/(2 ratio) neighbours
+double expectedBlockShare(double gap, double hOutFar, double ratio)
+{
+    const std::vector<Point> p = fccBlock(gap, 0, 1);
+    const std::size_t n = p.size();
+    auto distance = [&](std::size_t i, std::size_t j)
+    {
+        return std::sqrt((p[i][0] - p[j][0])*(p[i][0] - p[j][0]) + (p[i][1] - p[j][1])*(p[i][1] - p[j][1])
+                         + (p[i][2] - p[j][2])*(p[i][2] - p[j][2]));
+    };
+    std::vector<int> neighbours(n, 0);
+    for (std::size_t i = 0; i < n; i++)
+        for (std::size_t j = i + 1; j < n; j++)
+            if (distance(i, j) - 2*R < hOutFar) { neighbours[i]++; neighbours[j]++; }
+    const int most = static_cast<int>(0.5/ratio);
+    int pairs = 0, explicitPairs = 0;
+    for (std::size_t i = 0; i < n; i++)
+        for (std::size_t j = i + 1; j < n; j++)
+            if (distance(i, j) - 2*R < hOutFar)
+            {
+                pairs++;
+                explicitPairs += neighbours[i] <= most && neighbours[j] <= most;
+            }
+    return double(explicitPairs)/pairs;
+}
+
 } // namespace
 
 
 TEST(stiff, weakPairsExplicitOpenBlock)
 {
-    // nearest gap 0.2 um, cut-off 0.3 um: twelve neighbours each, at c dt/m
-    // 0.04, so every particle's sum is at most 0.48 and every pair is damped
-    // explicitly
-    const double share = weakPairsBlock(0.2, 0.3, 0.04, 200);
+    // nearest gap 0.2 um, cut-off 0.4 um (the next neighbours 0.41 um
+    // apart): twelve neighbours each, at c dt/m 0.04, so every particle's
+    // sum is at most 0.48 and every pair is damped explicitly
+    const double share = weakPairsBlock(0.2, 0.4, 0.04, 200);
     EXPECT_EQ(share, 1.0) << "pairs left in the implicit solve";
 }
 
 TEST(stiff, weakPairsExplicitMixedBlock)
 {
-    // the same at c dt/m 0.06: an inner particle's twelve add up to 0.72,
-    // so its pairs stay in the solve, while those between particles of the
-    // surface (fewer neighbours, sums within 1/2) go explicit: the update
-    // mixes both, and its velocities after 200 steps must agree with those
-    // of the update with every pair in the solve within 0.06, the order of
-    // their difference (measured: 0.0075)
+    // the same at c dt/m 0.058: eight neighbours add up to 0.46, nine to
+    // 0.52, so an inner particle's pairs stay in the solve, while those
+    // between particles of the surface with at most eight go explicit: the
+    // share must be that of the geometry (within 0.01: the particles move
+    // about 3 nm and their c by a few per cent), and the velocities after
+    // 200 steps must agree with those of the update with every pair in
+    // the solve within 0.06, the order of their difference
+    const double ratio = 0.058;
     std::vector<double> mixed, implicit;
-    const double share = weakPairsBlock(0.2, 0.3, 0.06, 200, 0.25, &mixed);
-    EXPECT_GT(share, 0.0) << "no pair damped explicitly";
-    EXPECT_LT(share, 1.0) << "every pair damped explicitly, whatever the sums";
-    weakPairsBlock(0.2, 0.3, 0.06, 200, 0.0, &implicit);
+    const double share = weakPairsBlock(0.2, 0.4, ratio, 200, 0.25, &mixed);
+    const double expected = expectedBlockShare(0.2, 0.4, ratio);
+    std::cout << "share of the pairs between particles with at most eight neighbours: " << expected << std::endl;
+    ASSERT_GT(expected, 0.1);
+    ASSERT_LT(expected, 0.9);
+    EXPECT_NEAR(share, expected, 0.01) << "not the pairs whose particles' sums are within 1/2";
+    weakPairsBlock(0.2, 0.4, ratio, 200, 0.0, &implicit);
     double difference = 0, norm = 0;
     for (std::size_t k = 0; k < mixed.size(); k++)
     {
         difference += (mixed[k] - implicit[k])*(mixed[k] - implicit[k]);
         norm += implicit[k]*implicit[k];
     }
-    // both are first order in c dt/m (at most 0.06 here) and they differ
-    // there: the explicit damping lags by a step
+    // both are first order in c dt/m (0.058 here) and they differ there:
+    // the explicit damping lags by a step
     std::cout << "velocities after 200 steps, mixed against all in the solve: relative difference "
               << std::sqrt(difference/norm) << std::endl;
     EXPECT_LT(std::sqrt(difference/norm), 0.06)
@@ -745,5 +772,70 @@ TEST(stiff, weakPairsExplicitDenseBlock)
     // stay in the solve (without that bound 96 % of them went explicit and
     // the kinetic energy grew threefold in a step)
     const double share = weakPairsBlock(0.05, 0.9, 0.24, 200);
-    EXPECT_LT(share, 1.0) << "every pair damped explicitly, whatever the sums";
+    EXPECT_LT(share, 0.01) << "pairs damped explicitly whose particles' sums exceed 1/2";
+}
+
+TEST(stiff, weakPairsExplicitUnequalMasses)
+{
+    // two pairs of a 0.3 um and a 0.1 um sphere (masses 27:1), 0.1 um
+    // apart, one listed small first and one big first, two-sphere form to
+    // 0.4 um, no drag, at the step where c dt/m is 0.4 at the small sphere
+    // (within the budget of its sum, 1/2, but above the ratio 0.25) and
+    // 0.015 at the big one: neither pair may go explicit in a step (judged
+    // by the first or the second particle's mass alone, one of them would);
+    // the set-up's half step (c dt/(2m) = 0.2 at the small sphere, within
+    // the ratio) takes both explicit once: 2 of the 102 pair updates of
+    // the set-up and 50 steps
+    const double Rb = 0.15, Rs = 0.05, gap = 0.1;
+    const double ms = rho*4.0/3.0*pi*Rs*Rs*Rs;
+    const double Rstar = Rb*Rs/(Rb + Rs);
+    const double u = gap/(2*Rstar);
+    const double G = (6*u*u + 4*u)/(6*u*u + 13*u + 2);
+    const double c = 6*pi*mu*Rstar*(1/G - 1);
+    const double dt = 0.4*ms/c;
+    std::ostringstream in;
+    in.precision(17);
+    in << LiggghtsRun::header(2.5) << contactAndLiquid()
+       << LiggghtsRun::twoSphereLubrication(hIn, 0.4, 0.25)
+       << "timestep " << dt << "\n"
+          "fix integrate all nve/sphere\n"
+          "create_atoms 1 single -1 0 0 units box\n"
+          "create_atoms 1 single " << -1 + Rs + gap + Rb << " 0 0 units box\n"
+          "create_atoms 1 single 1 0 0 units box\n"
+          "create_atoms 1 single " << 1 + Rb + gap + Rs << " 0 0 units box\n"
+          "set atom 1 diameter " << 2*Rs << " density " << rho << "\n"
+          "set atom 2 diameter " << 2*Rb << " density " << rho << "\n"
+          "set atom 3 diameter " << 2*Rb << " density " << rho << "\n"
+          "set atom 4 diameter " << 2*Rs << " density " << rho << "\n"
+          "set atom 1 vx 0.01\n"
+          "set atom 4 vx -0.01\n"
+          "run 0\n";
+    LiggghtsRun run;
+    run.commands(in.str());
+    auto kinetic = [&]()
+    {
+        double e = 0;
+        for (int id = 1; id <= 4; id++)
+            for (int k = 0; k < 3; k++)
+            {
+                const double vh = run.v(id)[k] + 0.5*dt*run.f(id)[k]/run.mass(id);
+                e += 0.5*run.mass(id)*vh*vh;
+            }
+        return e;
+    };
+    const double start = kinetic();
+    double last = start, grewBy = 1;
+    for (int step = 0; step < 50; step++)
+    {
+        run.commands("run 1 pre no post no\n");
+        const double now = kinetic();
+        if (now > last*(1 + 1e-9)) grewBy = std::max(grewBy, now/last);
+        last = now;
+    }
+    const double share = run.evaluate("f_colloid_implicit[7]");
+    std::cout << "unequal pairs, c dt/m 0.4 at the small sphere, 0.015 at the big: explicit share " << share
+              << ", kinetic energy " << start << " -> " << last << " fJ, largest growth in a step "
+              << grewBy << std::endl;
+    EXPECT_NEAR(share, 2.0/102, 1e-12) << "a pair judged by one particle's mass went explicit";
+    EXPECT_EQ(grewBy, 1) << "the kinetic energy grew without an energy source";
 }
