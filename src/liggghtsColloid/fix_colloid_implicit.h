@@ -86,17 +86,19 @@
    coupling's drag); A - B = h (R_implicit + L_e + K) >= 0 always and
    A + B = 2M + h R_implicit - h L_e >= 0 when h L_e <= M, so B lies
    between -A and A and v^T A v cannot grow, for any number of neighbours,
-   any drag and any implicit pairs beside (with no drag and no implicit
-   pair, A = M: the kinetic energy itself). The per-pair bound keeps the
-   lag of the explicit damping small (its error is of order c h/m); a
-   state in force balance is still kept exactly. With Brownian noise
-   (property brownianTemperature) the lag shows in the velocities, not in the
-   positions: an isolated explicit pair's relative velocity has the
-   variance kT/(m* (1 - lambda/2)), lambda = c h/m*, m* = m_i m_j/(m_i +
-   m_j) (up to +33 % at the ratio 0.25 and equal masses; an implicit
-   pair's is kT/(m* (1 + lambda/2)), below), while its relative
-   diffusion over many steps is exact (test: lubricatedPairDiffusion-
-   Explicit).
+   any drag and any implicit pairs beside. The kinetic energy cannot grow
+   either when also h K/2 <= M (the coupling keeps K h/m <= 1): in the
+   mass norm A >= M and B lies between -M and M. The per-pair bound
+   keeps the lag of the explicit damping small (its error is of order
+   c h/m); a state in force balance is still kept exactly. With Brownian
+   noise (property brownianTemperature) the lag shows in the velocities
+   (the update's, which move the particles), not in the positions: an
+   isolated explicit pair of equal spheres (or without drag) has the
+   relative velocity variance kT/(m* (1 - lambda/2)) along its axis,
+   lambda = c h/m*, m* = m_i m_j/(m_i + m_j) (+33 % at the ratio 0.25;
+   an implicit pair's is kT/(m* (1 + lambda/2)), below), while its
+   relative diffusion over many steps is exact (tests: brownian
+   lubricatedPairVelocities(Explicit), lubricatedPairDiffusionExplicit).
    Each rank decides a pair from c, both masses and both S (a
    ghost's S by one forward communication, with the liquid's velocity),
    so a pair across ranks is treated alike on both. Pairs with a particle

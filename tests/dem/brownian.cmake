@@ -9,8 +9,8 @@ target_link_libraries(brownianTests PRIVATE liggghtsColloid GTest::gtest GTest::
 dem_gtest_cases(brownianTests dem.brownian. brownian
     TIMEOUT 300 LABELS "dem;agglomeration"
     CASES meanSquareDisplacement equipartition reproducible lubricatedPairDiffusion
-          lubricatedPairDiffusionExplicit
-          lubricatedWallDiffusion)
+          lubricatedPairDiffusionExplicit lubricatedPairVelocities
+          lubricatedPairVelocitiesExplicit lubricatedWallDiffusion)
 
 # Lubrication noise across a processor boundary: the stock liggghts with
 # the plugin preloaded, serial against 2 ranks (runBrownianParallelTest.sh)

@@ -6,9 +6,9 @@
 # two-sphere form to 0.4 um (the fade starts beyond the nearest gap, the
 # next neighbours are 0.41 um apart), c dt/m 0.058 for the nearest pairs,
 # no drag, random velocities), centred on the boundary x = 0 of
-# 'processors 2 1 1'.  Nine pairs add up to 0.52: an inner particle's
-# stay in the solve; pairs between particles of the surface with at most
-# eight neighbours each go explicit; a pair is explicit only if both particles' sums are within
+# 'processors 2 1 1'.  An inner particle's twelve pairs add up to 0.70
+# and stay in the solve; pairs between particles of the surface (at most
+# eight neighbours: 0.46) go explicit; a pair is explicit only if both particles' sums are within
 # 1/2, so a pair across the boundary needs its ghost's sum, which the
 # update communicates.  Both runs must mix explicit and implicit pairs
 # (the shares differ: a pair across ranks counts on both) and agree in

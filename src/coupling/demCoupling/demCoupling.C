@@ -2019,8 +2019,8 @@ void Foam::demCoupling::write
                 << "; " << dem.sumFixVector("colloid/implicit", 4) << " s; "
                 << dem.sumFixVector("colloid/implicit", 5)
                 << " particles in the solve across ranks per update; "
-                << dem.sumFixVector("colloid/implicit", 6)
-                << " of the lubricated pairs damped explicitly" << endl;
+                << 100*dem.sumFixVector("colloid/implicit", 6)
+                << " % of the lubricated pairs damped explicitly" << endl;
         }
     }
     catch (const std::exception& e)

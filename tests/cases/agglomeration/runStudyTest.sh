@@ -184,11 +184,11 @@ explicit=${two}Explicit
 [ "$(value $explicit/system/slotCoaterParameters contactStiffness)" = 0.25 ] || fail "explicit: contactStiffness"
 grep -q "^variable lubricationExplicitRatio equal 0.25$" $explicit/DEM/slotCoater.liggghts \
     || fail "explicit: the ratio not written for the DEM"
-grep -Eq "^Implicit update of lubrication and drag: .* ([0-9.e-]+) of the lubricated pairs damped explicitly" \
+grep -Eq "^Implicit update of lubrication and drag: .* ([0-9.e+-]+) % of the lubricated pairs damped explicitly" \
     $explicit/log.colloidDEMFoam || fail "explicit: no share in the solver's log"
-share=$(sed -n 's/^Implicit update of lubrication and drag: .*; \(.*\) of the lubricated pairs damped explicitly$/\1/p' \
+share=$(sed -n 's/^Implicit update of lubrication and drag: .*; \(.*\) % of the lubricated pairs damped explicitly$/\1/p' \
     $explicit/log.colloidDEMFoam | tail -1)
-awk -v s="$share" 'BEGIN { exit !(s > 0 && s <= 1) }' || fail "explicit: share $share of the pairs damped explicitly"
+awk -v s="$share" 'BEGIN { exit !(s > 0 && s <= 100) }' || fail "explicit: $share % of the pairs damped explicitly"
 
 if ./Allstudy -endTime 2e-8 isoelectricBrownianSlowWeb > again.out 2>&1
 then
