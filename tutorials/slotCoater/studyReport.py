@@ -484,7 +484,8 @@ def write_milestones(cases, resultsDir):
 # suffixes of the study's numerical and model variants (Allstudy): the
 # same case at other numerical settings (softer contacts at twice the DEM
 # step; the weak lubricated pairs damped explicitly; the colloid cut-offs
-# at 0.025 or 0.1 um) or with the two-sphere hydrodynamics, compared with it in results/variants.md
+# at 0.025 or 0.1 um) or with the two-sphere hydrodynamics, compared with
+# it in results/variants.md
 VARIANT_SUFFIXES = ("SoftContacts", "TwoSphere", "Explicit", "ShortRange", "LongRange")
 
 
