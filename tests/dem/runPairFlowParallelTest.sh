@@ -48,30 +48,9 @@ awk 'BEGIN {
     for (m = 1; m <= n; m++) { print atoms[m] > "pairs.data"; print flow[m] > "flow.in" }
 }'
 
-cat > in.pairs <<'SCRIPT'
-units           micro
-atom_modify     map array sort 0 0.0
-boundary        f f f
-newton          off
-communicate     single vel yes
-processors      ${ranks} 1 1
-atom_style      sphere
-read_data       pairs.data
-fix m1 all property/global loadingStiffness peratomtypepair 2 1 1 1 1
-fix m2 all property/global coefficientRestitution peratomtypepair 2 0.5 0.5 0.5 0.5
-fix m3 all property/global coefficientFriction peratomtypepair 2 0.3 0.3 0.3 0.3
-fix l1 all property/global liquidViscosity scalar 1.0
-fix l2 all property/global lubricationInnerCutoff scalar 0.001
-fix l3 all property/global lubricationOuterCutoff scalar 0.5
-fix l4 all property/global lubricationFade scalar 1
-fix l5 all property/global lubricationFarField scalar 1
-fix l6 all property/global lubricationExplicitRatio scalar ${explicitRatio}
-neighbor        0.05 bin
-neigh_modify    delay 0
-pair_style      gran model walton_braun tangential history cohesion colloid/lub timeStepCheck off
-pair_coeff      * *
-timestep        ${dt}
-fix integrate all nve/sphere
+source "$(dirname "$0")/liggghtsScriptRun.sh"
+{ twoSphereLubricationScript pairs.data 1 0.5 '${explicitRatio}' 0.05
+cat <<'SCRIPT'
 # Stokes drag 6 pi mu R (pg/us) towards the liquid's velocity
 fix Ksl all property/atom Ksl scalar yes no no 2.827433388230814
 fix uf all property/atom uf vector yes no no 0 0 0
@@ -82,8 +61,8 @@ variable        share equal f_colloid_implicit[7]
 print           "explicit share ${share}"
 write_dump      all custom positions.${ranks} id x y z modify sort id format "%d %.15g %.15g %.15g"
 SCRIPT
+} > in.pairs
 
-source "$(dirname "$0")/liggghtsScriptRun.sh"
 for ranks in 1 2
 do
     runLiggghts $ranks in.pairs pairs -var explicitRatio "$explicitRatio" -var dt $dt -var steps $steps

@@ -53,37 +53,16 @@ dt=$(awk 'BEGIN { pi = atan2(0, -1); R = 0.15; u = 0.2/R
                   G = (6*u*u + 4*u)/(6*u*u + 13*u + 2); c = 3*pi*R*(1/G - 1)
                   m = 2.5*4/3*pi*R^3; printf "%.12g", 0.058*m/c }')
 
-cat > in.block <<'SCRIPT'
-units           micro
-atom_modify     map array sort 0 0.0
-boundary        f f f
-newton          off
-communicate     single vel yes
-processors      ${ranks} 1 1
-atom_style      sphere
-read_data       block.data
-fix m1 all property/global loadingStiffness peratomtypepair 2 1000 1000 1000 1000
-fix m2 all property/global coefficientRestitution peratomtypepair 2 0.5 0.5 0.5 0.5
-fix m3 all property/global coefficientFriction peratomtypepair 2 0.3 0.3 0.3 0.3
-fix l1 all property/global liquidViscosity scalar 1.0
-fix l2 all property/global lubricationInnerCutoff scalar 0.001
-fix l3 all property/global lubricationOuterCutoff scalar 0.4
-fix l4 all property/global lubricationFade scalar 1
-fix l5 all property/global lubricationFarField scalar 1
-fix l6 all property/global lubricationExplicitRatio scalar 0.25
-neighbor        0.1 bin
-neigh_modify    delay 0
-pair_style      gran model walton_braun tangential history cohesion colloid/lub timeStepCheck off
-pair_coeff      * *
-timestep        ${dt}
-fix integrate all nve/sphere
+source "$(dirname "$0")/liggghtsScriptRun.sh"
+{ twoSphereLubricationScript block.data 1000 0.4 '0.25' 0.1
+cat <<'SCRIPT'
 run             400
 variable        share equal f_colloid_implicit[7]
 print           "explicit share ${share}"
 write_dump      all custom positions.${ranks} id x y z modify sort id format "%d %.15g %.15g %.15g"
 SCRIPT
+} > in.block
 
-source "$(dirname "$0")/liggghtsScriptRun.sh"
 runLiggghts 1 in.block block -var dt "$dt"
 runLiggghts 2 in.block block -var dt "$dt"
 
