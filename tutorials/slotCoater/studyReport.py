@@ -1,8 +1,9 @@
 """The agglomeration study's report (./Allstudy -report): for each case
 folder in study/ with a contact analysis, the figures of the whole run
 and the run's cost, as a Markdown table (results/summary.md), and the
-particle contacts and agglomerated particles against time of all cases
-in one plot (results/contacts.png).  Where the agglomerates are at each
+particle contacts, agglomerated particles, agglomerates and the largest
+agglomerate's size against time of all cases in one figure
+(results/contacts.png).  Where the agglomerates are at each
 case's last write (results/where.md: each agglomerate's particles by id,
 its centre, height above the substrate and part of the die; where.png:
 the centres on the die's outline): from the written particle cloud, the
@@ -578,7 +579,8 @@ def main(studyDir, resultsDir):
             name, end*1e6, s["pairFormedPerUs"], s["pairContacts"], duration,
             s["wallContacts"], s["agglomerates"], s["largestAgglomerate"], seconds, rate))
         series[name] = ([r["time"]*1e6 for r in data], [r["pairContacts"] for r in data],
-                        [r["agglomeratedParticles"] for r in data])
+                        [r["agglomeratedParticles"] for r in data],
+                        [r["agglomerates"] for r in data], [r["largestAgglomerate"] for r in data])
     with open(os.path.join(resultsDir, "summary.md"), "w") as f:
         f.write("\n".join(rows) + "\n")
     print("\n".join(rows))
@@ -586,20 +588,22 @@ def main(studyDir, resultsDir):
     import matplotlib
     matplotlib.use("Agg")
     import matplotlib.pyplot as plt
-    fig, (a, b) = plt.subplots(1, 2, figsize=(11, 4))
-    for name, (t, pairs, agglomerated) in series.items():
-        a.plot(t, pairs, label=name)
-        b.plot(t, agglomerated, label=name)
-    # counts: from 0, at least to 1 (a case without contacts is a flat line
-    # at the bottom, not in the middle of a symmetric range)
-    top = max([1] + [max(p + g) for _, p, g in series.values() if p])
-    for axis in (a, b):
-        axis.set_ylim(0, 1.05*top)
-    a.set_xlabel("time [µs]")
-    a.set_ylabel("particle-particle contacts")
-    b.set_xlabel("time [µs]")
-    b.set_ylabel("particles in agglomerates")
-    a.legend(fontsize=8)
+    from matplotlib.ticker import MaxNLocator
+    # contacts and the agglomerates they make: how many particles, how many
+    # agglomerates, how large the largest
+    fig, axes = plt.subplots(2, 2, figsize=(11, 8))
+    panels = ((1, "particle-particle contacts"), (2, "particles in agglomerates"),
+              (3, "agglomerates"), (4, "particles in the largest agglomerate"))
+    for axis, (k, label) in zip(axes.flat, panels):
+        for name, columns in series.items():
+            axis.plot(columns[0], columns[k], label=name)
+        # counts: from 0, at least to 1 (a case without contacts is a flat
+        # line at the bottom, not in the middle of a symmetric range)
+        axis.set_ylim(0, 1.05*max([1] + [max(c[k]) for c in series.values() if c[k]]))
+        axis.yaxis.set_major_locator(MaxNLocator(integer=True))
+        axis.set_xlabel("time [µs]")
+        axis.set_ylabel(label)
+    axes[0][0].legend(fontsize=8)
     fig.tight_layout()
     fig.savefig(os.path.join(resultsDir, "contacts.png"), dpi=120)
     print("written: %s, %s" % (os.path.join(resultsDir, "summary.md"),
