@@ -110,13 +110,37 @@ foreach(mode Parallel Rolling)
 endforeach()
 set_tests_properties(case.filtration.consolidationParallel PROPERTIES PROCESSORS 2)
 
-add_test(NAME case.filtration.rollingFrictionInput
-    COMMAND ${filtrationDir}/runRollingFrictionInputTest.sh
-            ${filtrationWork}/rollingFrictionInput)
-set_tests_properties(case.filtration.rollingFrictionInput PROPERTIES
-    TIMEOUT 120 LABELS "case;filtration"
-    PASS_REGULAR_EXPRESSION "rollingFriction input: all checks passed"
-    ENVIRONMENT PYTHONDONTWRITEBYTECODE=1)
+# A quick test without a solver run: its name, the line it prints when
+# every check passed, and its command line (the work folder
+# filtrationWork/name is appended)
+function(add_filtration_check name passed)
+    add_test(NAME case.filtration.${name}
+        COMMAND ${ARGN} ${filtrationWork}/${name})
+    set_tests_properties(case.filtration.${name} PROPERTIES
+        TIMEOUT 120 LABELS "case;filtration"
+        PASS_REGULAR_EXPRESSION "${passed}"
+        ENVIRONMENT PYTHONDONTWRITEBYTECODE=1)
+endfunction()
+
+add_filtration_check(rollingFrictionInput
+    "rollingFriction input: all checks passed"
+    ${filtrationDir}/runRollingFrictionInputTest.sh)
+
+# filtration.gelSuspension: the flocculated suspension as one network
+#   (makeFlocs.py ... gel) at the tests' size against the same seed's
+#   flocs: one cluster, a tree of contacts, no overlap, the walls' margin,
+#   the flocs moved rigidly, a bad argument refused
+#   (checkGelSuspension.py)
+add_filtration_check(gelSuspension "gel suspension: all checks passed"
+    /usr/bin/python3 ${filtrationDir}/checkGelSuspension.py
+    ${CMAKE_SOURCE_DIR}/tutorials/filtration/makeFlocs.py)
+
+# filtration.flocculatedSuspensionInput: flocculatedSuspension flocs|gel
+#   reaches makeFlocs.py; a bad value stops prepareRun.sh with a message
+#   and no DEM files
+add_filtration_check(flocculatedSuspensionInput
+    "flocculatedSuspension input: all checks passed"
+    ${filtrationDir}/runFlocculatedSuspensionInputTest.sh)
 
 # consolidationResults.py without a DEM run (checkConsolidation<check>.py):
 #   Incomplete: a consolidation that stopped after 2 of its 5 pressures

@@ -17,7 +17,20 @@ their spheres first touch (centres exactly one diameter apart).  Spheres
 of different flocs are at least 5 % of a diameter apart; centres at
 least a radius plus 5 % of a diameter from the y faces.
 
-usage: makeFlocs.py out.data n diameter Lx Ly Lz seed floc_size
+With the last argument "gel" the placed flocs then aggregate further,
+cluster with cluster, until one network holds every sphere: what the
+suspension becomes once its flocs reach about 20 spheres (a floc of
+fractal dimension 1.8 then fills as much space as the 13 % of solids:
+m^(1 - 3/1.8) = 0.13 at m = 21), about 20 doubling times, so tens of
+minutes, after the pH is set.  The aggregation is diffusion-limited
+(Meakin 1983; Kolb, Botet & Jullien 1983): a cluster, chosen with
+probability proportional to its mobility m^(-1/1.8) (Stokes-Einstein
+with a radius growing as m^(1/1.8)), steps a quarter of a diameter in a
+random direction (shortened at the y faces' margin) and, where one of its
+spheres first touches a sphere of another cluster on the way, stops there
+(centres one diameter apart) and joins it.
+
+usage: makeFlocs.py out.data n diameter Lx Ly Lz seed floc_size [gel]
        (lengths in um)
 """
 import math
@@ -96,6 +109,91 @@ def floc(size, d, rng):
     return clusters[0]
 
 
+def aggregate(pts, flocs, d, box, margin, rng):
+    """Join the clusters (lists of indices into pts, periodic in x and z)
+    by diffusion-limited cluster-cluster aggregation until one is left;
+    pts is changed in place.  Returns the number of moves."""
+    step = 0.25*d
+    reach = d + step          # a sphere that a step can touch lies within
+    nbin = [max(1, int(L//reach)) for L in box]
+    pos = [list(p) for p in pts]
+    owner = {}
+    members = {}
+    for c, fl in enumerate(flocs):
+        members[c] = list(fl)
+        for i in fl:
+            owner[i] = c
+    bins = {}
+
+    def key(p):
+        return tuple(min(nb - 1, int(p[k]/box[k]*nb))
+                     for k, nb in enumerate(nbin))
+
+    for i, p in enumerate(pos):
+        bins.setdefault(key(p), set()).add(i)
+
+    def neighbours(p):
+        b = key(p)
+        seen = set()
+        for dx in (-1, 0, 1):
+            for dy in (-1, 0, 1):
+                for dz in (-1, 0, 1):
+                    kk = ((b[0] + dx) % nbin[0], b[1] + dy, (b[2] + dz) % nbin[2])
+                    if kk not in seen:
+                        seen.add(kk)
+                        for j in bins.get(kk, ()):
+                            yield j
+
+    moves = 0
+    limit = 100*len(pts)       # the tests' size needs 0.6 a sphere
+    while len(members) > 1:
+        moves += 1
+        if moves > limit:
+            raise SystemExit('makeFlocs.py: %d clusters left after %d moves:'
+                             ' no gel' % (len(members), limit))
+        ids = list(members)
+        c = rng.choices(ids, [len(members[k])**(-1/1.8) for k in ids])[0]
+        u = unit_vector(rng)
+        # the step, shortened where a sphere would cross the y margin
+        s_max = step
+        if u[1] > 0:
+            s_max = min(s_max, min((box[1] - margin - pos[i][1])/u[1]
+                                   for i in members[c]))
+        elif u[1] < 0:
+            s_max = min(s_max, min((margin - pos[i][1])/u[1]
+                                   for i in members[c]))
+        s_first, partner = s_max, None
+        for i in members[c]:
+            b = pos[i]
+            for j in neighbours(b):
+                if owner[j] == c:
+                    continue
+                a = pos[j]
+                w = [b[k] - a[k] for k in range(3)]
+                for k in (0, 2):
+                    w[k] -= box[k]*round(w[k]/box[k])
+                wu = dot(w, u)
+                disc = wu*wu - dot(w, w) + d*d
+                if disc >= 0:
+                    s = -wu - math.sqrt(disc)
+                    if -1e-9*d <= s < s_first:
+                        s_first, partner = max(s, 0.0), j
+        for i in members[c]:
+            bins[key(pos[i])].discard(i)
+            for k in range(3):
+                pos[i][k] += s_first*u[k]
+            for k in (0, 2):
+                pos[i][k] %= box[k]
+            bins.setdefault(key(pos[i]), set()).add(i)
+        if partner is not None:
+            other = owner[partner]
+            for i in members[c]:
+                owner[i] = other
+            members[other] += members.pop(c)
+    pts[:] = [tuple(p) for p in pos]
+    return moves
+
+
 def rotated(points, rng):
     """points turned by a random rotation (uniform quaternion)."""
     u1, u2, u3 = rng.random(), rng.random(), rng.random()
@@ -115,6 +213,11 @@ def main():
     n, d = int(sys.argv[2]), float(sys.argv[3])
     box = [float(x) for x in sys.argv[4:7]]
     seed, size = int(sys.argv[7]), int(sys.argv[8])
+    gelled = len(sys.argv) > 9 and sys.argv[9] == 'gel'
+    if len(sys.argv) > 10 or (len(sys.argv) == 10 and not gelled):
+        raise SystemExit('makeFlocs.py: unknown argument %s; usage: '
+                         'makeFlocs.py out.data n diameter Lx Ly Lz seed '
+                         'floc_size [gel]' % ' '.join(sys.argv[9:]))
     if size < 1:
         raise SystemExit('makeFlocs.py: floc size %d: at least 1' % size)
     rng = random.Random(seed)
@@ -172,8 +275,16 @@ def main():
                              ' spheres): fewer or smaller flocs, or a larger'
                              ' box' % (len(pts)//size + 1, len(sizes), m))
 
-    write_data(out, pts, d, box, '%d spheres in %d flocs (makeFlocs.py)'
-               % (n, len(sizes)))
+    if gelled:
+        flocs = [list(range(k, k + m)) for k, m in
+                 zip([sum(sizes[:j]) for j in range(len(sizes))], sizes)]
+        moves = aggregate(pts, flocs, d, box, margin, rng)
+        title = ('%d spheres in one network: %d flocs joined by diffusion-'
+                 'limited aggregation in %d moves (makeFlocs.py)'
+                 % (n, len(sizes), moves))
+    else:
+        title = '%d spheres in %d flocs (makeFlocs.py)' % (n, len(sizes))
+    write_data(out, pts, d, box, title)
 
 if __name__ == '__main__':
     main()

@@ -5,8 +5,10 @@
 #   DEM/suspension.data       the suspension at t = 0, the same for the
 #                             same sizes: stable, single spheres at random
 #                             (makeSuspension.py); flocculated, flocs of
-#                             flocSize spheres (makeFlocs.py); spheres not
-#                             in one floc at least 5 % of a diameter apart
+#                             flocSize spheres (makeFlocs.py), or these
+#                             joined into one network (flocculatedSuspension
+#                             gel); spheres not in one floc at least 5 % of
+#                             a diameter apart
 #   log.timeStep              seed 002's critical step (eq. 12) against
 #                             the DEM step
 #
@@ -55,6 +57,12 @@ awk -v v="$rollingFriction" 'BEGIN {
     exit !(v ~ /^[-+]?([0-9]+\.?[0-9]*|\.[0-9]+)([eE][-+]?[0-9]+)?$/ && v + 0 >= 0 && v + 0 < 1) }' \
     || { echo "$params: keyword 'rollingFriction' is $rollingFriction;" \
         "allowed range: 0 <= rollingFriction < 1" 1>&2; exit 1; }
+flocculatedSuspension=$(param flocculatedSuspension)
+case "$flocculatedSuspension" in
+    flocs|gel) ;;
+    *) echo "$params: keyword 'flocculatedSuspension' is" \
+           "$flocculatedSuspension; allowed: flocs or gel" 1>&2; exit 1 ;;
+esac
 
 # The DEM's values in its units (um, nN/um^2 = 1e3 Pa, fJ)
 width=$(param width); height=$(param slurryHeight)
@@ -106,9 +114,12 @@ diameter=$(awk -v d="$d" 'BEGIN { print d*1e6 }')
 if [ "$(param variant)" = flocculated ]
 then
     # At the isoelectric point the suspension has flocculated for minutes
-    # before it reaches the filter (makeFlocs.py says why)
+    # before it reaches the filter (makeFlocs.py says why): flocs, or
+    # flocs joined into one network (gel)
+    gel=
+    [ "$flocculatedSuspension" = gel ] && gel=gel
     python3 "$tutorial"/makeFlocs.py DEM/suspension.data "$n" "$diameter" \
-        "$width" "$height" "$width" 2718 "$(param flocSize)"
+        "$width" "$height" "$width" 2718 "$(param flocSize)" $gel
 else
     python3 "${COLLOIDFOAM_TUTORIALS:-$tutorial/..}"/twoWay/makeSuspension.py \
         DEM/suspension.data \

@@ -8,31 +8,11 @@
 #
 # usage: runRollingFrictionInputTest.sh workDir
 set -e
-work=$1
-here=$(cd "$(dirname "$0")" && pwd)
-source "$here/../twoWay/caseFunctions.sh"
-copyCase "$COLLOIDFOAM_TUTORIALS/filtration" "$work"
-params=system/filtrationParameters
-failures=0
-fail() { echo "FAIL: $*"; failures=$((failures + 1)); }
+source "$(dirname "$0")/prepareRunInput.sh" "$1"
 
 for bad in -0.1 1 rough
 do
-    rm -rf DEM
-    sed -i "s/^rollingFriction .*/rollingFriction $bad;/" $params
-    if "$COLLOIDFOAM_TUTORIALS/filtration/prepareRun.sh" > log.prepareRun 2> log.error
-    then
-        fail "rollingFriction $bad: prepareRun.sh exited 0"
-    fi
-    message=$(cat log.error)
-    for part in "$params" "'rollingFriction'" "is $bad;" "0 <= rollingFriction < 1"
-    do
-        [[ "$message" == *"$part"* ]] \
-            || fail "rollingFriction $bad: the message '$message' lacks '$part'"
-    done
-    [ ! -e DEM/filtration.liggghts ] \
-        || fail "rollingFriction $bad: DEM/filtration.liggghts written"
-    echo "rollingFriction $bad: $message"
+    refused rollingFriction $bad "0 <= rollingFriction < 1"
 done
 
 for good in "0 off" "0.1 epsd2"
