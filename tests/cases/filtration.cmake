@@ -142,6 +142,14 @@ add_filtration_check(flocculatedSuspensionInput
     "flocculatedSuspension input: all checks passed"
     ${filtrationDir}/runFlocculatedSuspensionInputTest.sh)
 
+# filtration.compare: filtrationCompare.py's flocculation rows (the
+#   filtration time's reduction, and the Ruth slope's, the time's where the
+#   cake dominates) on two hand-built runs that follow Ruth's law
+#   (checkCompare.py)
+add_filtration_check(compare "filtration comparison: all checks passed"
+    /usr/bin/python3 ${filtrationDir}/checkCompare.py
+    ${CMAKE_SOURCE_DIR}/tutorials/filtration)
+
 # consolidationResults.py without a DEM run (checkConsolidation<check>.py):
 #   Incomplete: a consolidation that stopped after 2 of its 5 pressures
 #     exits non-zero, names DEM/consolidation.dat, the count and
