@@ -49,6 +49,24 @@ set_tests_properties(case.filtration.variants PROPERTIES
     FIXTURES_REQUIRED "filtration_stable;filtration_flocculated"
     ENVIRONMENT PYTHONDONTWRITEBYTECODE=1)
 
+# filtration.bondStrength: flocs held by bonds of about 30 % of the
+#   contact loads (the flocculated variant with 30 times seed 002's
+#   Hamaker constant, rolling resistance 0.1) build a cake looser than the
+#   stable one by at least rolling resistance's own 0.010 plus ten
+#   run-to-run standard deviations, at least 1.2 times as permeable, with
+#   a Ruth slope at most 0.79 times the stable one's (checkBondStrength.py:
+#   with seed 002's constant, or 30 times it without rolling resistance,
+#   the checks fail).
+add_test(NAME case.filtration.bondStrength
+    COMMAND ${filtrationDir}/runBondStrengthTest.sh
+            ${filtrationWork}/bondStrength
+            ${filtrationWork}/stable/runs/stable)
+set_tests_properties(case.filtration.bondStrength PROPERTIES
+    TIMEOUT 1500 LABELS "case;filtration"
+    FIXTURES_REQUIRED filtration_stable
+    PASS_REGULAR_EXPRESSION "bond strength: all checks passed"
+    ENVIRONMENT PYTHONDONTWRITEBYTECODE=1)
+
 # filtration.parallel: the stable variant on 2 ranks (METIS): the flow
 #   rate of the serial run at every step up to 20 us within 1e-9 (the same
 #   run until round-off grows), the filtrate volume at the end time within
@@ -112,7 +130,8 @@ set_tests_properties(case.filtration.consolidationParallel PROPERTIES PROCESSORS
 
 # A quick test without a solver run: its name, the line it prints when
 # every check passed, and its command line (the work folder
-# filtrationWork/name is appended)
+# filtrationWork/name is appended; Python scripts by Debian's python3,
+# /usr/bin/python3, which has numpy and matplotlib)
 function(add_filtration_check name passed)
     add_test(NAME case.filtration.${name}
         COMMAND ${ARGN} ${filtrationWork}/${name})
@@ -142,10 +161,10 @@ add_filtration_check(flocculatedSuspensionInput
     "flocculatedSuspension input: all checks passed"
     ${filtrationDir}/runFlocculatedSuspensionInputTest.sh)
 
-# filtration.compare: filtrationCompare.py's flocculation rows (the
-#   filtration time's reduction, and the Ruth slope's, the time's where the
-#   cake dominates) on two hand-built runs that follow Ruth's law
-#   (checkCompare.py)
+# filtration.compare: filtrationCompare.py's flocculation rows, the
+#   filtration time's reduction and the Ruth slopes' ratio (the time's
+#   reduction where the cake dominates), on hand-built run pairs that
+#   follow Ruth's law, with a medium and without one (checkCompare.py)
 add_filtration_check(compare "filtration comparison: all checks passed"
     /usr/bin/python3 ${filtrationDir}/checkCompare.py
     ${CMAKE_SOURCE_DIR}/tutorials/filtration)

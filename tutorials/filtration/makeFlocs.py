@@ -19,16 +19,19 @@ least a radius plus 5 % of a diameter from the y faces.
 
 With the last argument "gel" the placed flocs then aggregate further,
 cluster with cluster, until one network holds every sphere: what the
-suspension becomes once its flocs reach about 20 spheres (a floc of
-fractal dimension 1.8 then fills as much space as the 13 % of solids:
-m^(1 - 3/1.8) = 0.13 at m = 21), about 20 doubling times, so tens of
-minutes, after the pH is set.  The aggregation is diffusion-limited
-(Meakin 1983; Kolb, Botet & Jullien 1983): a cluster, chosen with
-probability proportional to its mobility m^(-1/1.8) (Stokes-Einstein
-with a radius growing as m^(1/1.8)), steps a quarter of a diameter in a
-random direction (shortened at the y faces' margin) and, where one of its
-spheres first touches a sphere of another cluster on the way, stops there
-(centres one diameter apart) and joins it.
+suspension becomes once its flocs fill space, m^(1 - 3/D) = 0.13 for
+flocs of m spheres and fractal dimension D: m = 21 at D = 1.8 (diffusion-
+limited), 34 at 1.9 (these flocs); with Smoluchowski's mean size 1 +
+t/t_half, after 20 to 33 half-times (above), 47 to 77 minutes after the
+pH is set.  The aggregation is diffusion-limited (Meakin 1983; Kolb,
+Botet & Jullien 1983): a cluster, chosen with probability proportional
+to its mobility m^(-1/D) (Stokes-Einstein with a radius growing as
+m^(1/D), D = 1.8), steps a quarter of a diameter in a random direction
+(at the y faces' margin the step's y part is cut short, so the cluster
+slides along the wall) and, where one of its spheres first touches a
+sphere of another cluster on the way, stops there (centres one diameter
+apart) and joins it.  The x and z periods must be at least 2.5
+diameters (one image of each sphere within a step's reach).
 
 usage: makeFlocs.py out.data n diameter Lx Ly Lz seed floc_size [gel]
        (lengths in um)
@@ -108,13 +111,23 @@ def floc(size, d, rng):
         clusters = clusters[2:] + [merge(a, b, d, rng)]
     return clusters[0]
 
+# Fractal dimension of diffusion-limited cluster-cluster aggregates: the
+# gel's clusters' mobility m^(-1/D)
+DLCA_DIMENSION = 1.8
+
 
 def aggregate(pts, flocs, d, box, margin, rng):
     """Join the clusters (lists of indices into pts, periodic in x and z)
     by diffusion-limited cluster-cluster aggregation until one is left;
     pts is changed in place.  Returns the number of moves."""
     step = 0.25*d
-    reach = d + step          # a sphere that a step can touch lies within
+    reach = d + step          # centre distance within which a step can
+                              # bring two spheres into contact
+    for k in (0, 2):
+        if box[k] < 2*reach:
+            raise SystemExit('makeFlocs.py: gel: the period %s = %g um is'
+                             ' below 2.5 diameters (%g um)'
+                             % ('xyz'[k], box[k], 2*reach))
     nbin = [max(1, int(L//reach)) for L in box]
     pos = [list(p) for p in pts]
     owner = {}
@@ -145,23 +158,29 @@ def aggregate(pts, flocs, d, box, margin, rng):
                             yield j
 
     moves = 0
-    limit = 100*len(pts)       # the tests' size needs 0.6 a sphere
+    limit = 100*len(pts)       # moves; the tests' size takes 0.6 a sphere
+                               # (486 for 795)
     while len(members) > 1:
         moves += 1
         if moves > limit:
             raise SystemExit('makeFlocs.py: %d clusters left after %d moves:'
                              ' no gel' % (len(members), limit))
         ids = list(members)
-        c = rng.choices(ids, [len(members[k])**(-1/1.8) for k in ids])[0]
+        c = rng.choices(ids, [len(members[k])**(-1/DLCA_DIMENSION)
+                              for k in ids])[0]
         u = unit_vector(rng)
-        # the step, shortened where a sphere would cross the y margin
-        s_max = step
-        if u[1] > 0:
-            s_max = min(s_max, min((box[1] - margin - pos[i][1])/u[1]
-                                   for i in members[c]))
-        elif u[1] < 0:
-            s_max = min(s_max, min((margin - pos[i][1])/u[1]
-                                   for i in members[c]))
+        # the step; its y part cut at the y margin (the cluster slides)
+        move = [step*u[k] for k in range(3)]
+        if move[1] > 0:
+            move[1] = min(move[1], max(0.0, min(box[1] - margin - pos[i][1]
+                                                for i in members[c])))
+        elif move[1] < 0:
+            move[1] = max(move[1], min(0.0, max(margin - pos[i][1]
+                                                for i in members[c])))
+        s_max = math.sqrt(dot(move, move))
+        if s_max == 0:                   # straight into the wall
+            continue
+        u = [x/s_max for x in move]
         s_first, partner = s_max, None
         for i in members[c]:
             b = pos[i]
@@ -184,6 +203,8 @@ def aggregate(pts, flocs, d, box, margin, rng):
                 pos[i][k] += s_first*u[k]
             for k in (0, 2):
                 pos[i][k] %= box[k]
+                if pos[i][k] >= box[k]:      # -1e-17 % L is L
+                    pos[i][k] = 0.0
             bins.setdefault(key(pos[i]), set()).add(i)
         if partner is not None:
             other = owner[partner]

@@ -111,6 +111,9 @@ awk -v d="$d" -v rho="$rhop" -v E="$E" -v nu="$nu" -v dt="$dt" 'BEGIN {
 n=$(awk -v L="$width" -v H="$height" -v d="$d" -v phi="$phi" \
     'BEGIN { printf "%d", phi*L*L*H/(3.14159265358979/6*(d*1e6)^3) + 0.5 }')
 diameter=$(awk -v d="$d" 'BEGIN { print d*1e6 }')
+# A suspension that cannot be made (no room for a floc, no gel) leaves no
+# half-prepared run behind
+trap 'rm -f DEM/filtration.liggghts DEM/suspension.data log.timeStep' ERR
 if [ "$(param variant)" = flocculated ]
 then
     # At the isoelectric point the suspension has flocculated for minutes
@@ -125,5 +128,6 @@ else
         DEM/suspension.data \
         "$n" "$diameter" "$width" "$height" "$width" 2718 column
 fi
+trap - ERR
 echo "$n particles at solids fraction $phi in $width x $height x $width um"
 
