@@ -14,8 +14,9 @@ Kolb 1984; fractal dimension about 1.9): clusters, starting from single
 spheres, are merged two at a time, smallest first; one approaches the
 other along a random line with a random offset and stops where two of
 their spheres first touch (centres exactly one diameter apart).  Spheres
-of different flocs are at least 5 % of a diameter apart; centres at
-least a radius plus 5 % of a diameter from the y faces.
+of different flocs are at least 5 % of a diameter apart (until the gel
+below joins them); centres at least a radius plus 5 % of a diameter from
+the y faces.
 
 With the last argument "gel" the placed flocs then aggregate further,
 cluster with cluster, until one network holds every sphere: what the

@@ -7,8 +7,8 @@
 #                             (makeSuspension.py); flocculated, flocs of
 #                             flocSize spheres (makeFlocs.py), or these
 #                             joined into one network (flocculatedSuspension
-#                             gel); spheres not in one floc at least 5 % of
-#                             a diameter apart
+#                             gel); spheres not in one floc (not joined by
+#                             the gel) at least 5 % of a diameter apart
 #   log.timeStep              seed 002's critical step (eq. 12) against
 #                             the DEM step
 #
@@ -111,8 +111,8 @@ awk -v d="$d" -v rho="$rhop" -v E="$E" -v nu="$nu" -v dt="$dt" 'BEGIN {
 n=$(awk -v L="$width" -v H="$height" -v d="$d" -v phi="$phi" \
     'BEGIN { printf "%d", phi*L*L*H/(3.14159265358979/6*(d*1e6)^3) + 0.5 }')
 diameter=$(awk -v d="$d" 'BEGIN { print d*1e6 }')
-# A suspension that cannot be made (no room for a floc, no gel) leaves no
-# half-prepared run behind
+# A suspension that cannot be made (no room for a floc, no gel) leaves
+# neither it, the DEM's values nor log.timeStep behind
 trap 'rm -f DEM/filtration.liggghts DEM/suspension.data log.timeStep' ERR
 if [ "$(param variant)" = flocculated ]
 then

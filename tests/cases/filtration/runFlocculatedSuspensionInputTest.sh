@@ -5,7 +5,8 @@
 # allowed values (flocs or gel), and no DEM/filtration.liggghts nor
 # DEM/suspension.data; for the flocculated variant, "flocs" writes
 # 100 separate flocs of 8 and "gel" one network of the test size's 795
-# spheres (the title makeFlocs.py writes).
+# spheres (the title makeFlocs.py writes); a gel that cannot be made (a
+# period below 2.5 diameters) stops it and leaves no files behind.
 # (The network's geometry: case.filtration.gelSuspension.)
 #
 # usage: runFlocculatedSuspensionInputTest.sh workDir
@@ -30,6 +31,22 @@ do
         || fail "flocculatedSuspension $value: DEM/suspension.data is '$(head -1 DEM/suspension.data)', not '$*'"
     echo "flocculatedSuspension $value: $(head -1 DEM/suspension.data)"
 done
+
+# A gel that cannot be made (a period below 2.5 diameters: 12 um for
+# 5.8 um spheres) stops prepareRun.sh with makeFlocs.py's message and
+# leaves neither the suspension, the DEM's values nor log.timeStep
+rm -rf DEM log.timeStep
+sed -i -e "s/^flocculatedSuspension .*/flocculatedSuspension gel;/" \
+    -e "s/^width .*/width 12;/" $params
+if "$COLLOIDFOAM_TUTORIALS/filtration/prepareRun.sh" > log.prepareRun 2> log.error
+then
+    fail "gel in a 12 um period: prepareRun.sh exited 0"
+fi
+grep -q "period x = 12 um is below 2.5 diameters" log.error \
+    || fail "gel in a 12 um period: the message '$(cat log.error)' does not name the period"
+[ ! -e DEM/suspension.data ] && [ ! -e DEM/filtration.liggghts ] && [ ! -e log.timeStep ] \
+    || fail "gel in a 12 um period: files left behind"
+echo "gel in a 12 um period: $(tail -1 log.error)"
 
 [ "$failures" -eq 0 ] || { echo "$failures failures"; exit 1; }
 echo "flocculatedSuspension input: all checks passed"
