@@ -112,6 +112,46 @@ def floc(size, d, rng):
         clusters = clusters[2:] + [merge(a, b, d, rng)]
     return clusters[0]
 
+def separation(a, b, box):
+    """a - b, x and z by the nearest periodic image."""
+    w = [a[k] - b[k] for k in range(3)]
+    for k in (0, 2):
+        w[k] -= box[k]*round(w[k]/box[k])
+    return w
+
+
+class Bins:
+    """Indices of points in cells at least `cell` wide, periodic in x and
+    z: every point within `cell` of p is in the 27 cells around p's."""
+
+    def __init__(self, box, cell):
+        self.box = box
+        self.n = [max(1, int(L//cell)) for L in box]
+        self.cells = {}
+
+    def key(self, p):
+        return tuple(min(nb - 1, int(p[k]/self.box[k]*nb))
+                     for k, nb in enumerate(self.n))
+
+    def add(self, i, p):
+        self.cells.setdefault(self.key(p), set()).add(i)
+
+    def remove(self, i, p):
+        self.cells[self.key(p)].discard(i)
+
+    def near(self, p):
+        b = self.key(p)
+        seen = set()
+        for dx in (-1, 0, 1):
+            for dy in (-1, 0, 1):
+                for dz in (-1, 0, 1):
+                    kk = ((b[0] + dx) % self.n[0], b[1] + dy,
+                          (b[2] + dz) % self.n[2])
+                    if kk not in seen:
+                        seen.add(kk)
+                        yield from self.cells.get(kk, ())
+
+
 # Fractal dimension of diffusion-limited cluster-cluster aggregates: the
 # gel's clusters' mobility m^(-1/D)
 DLCA_DIMENSION = 1.8
@@ -129,7 +169,6 @@ def aggregate(pts, flocs, d, box, margin, rng):
             raise SystemExit('makeFlocs.py: gel: the period %s = %g um is'
                              ' below 2.5 diameters (%g um)'
                              % ('xyz'[k], box[k], 2*reach))
-    nbin = [max(1, int(L//reach)) for L in box]
     pos = [list(p) for p in pts]
     owner = {}
     members = {}
@@ -137,26 +176,9 @@ def aggregate(pts, flocs, d, box, margin, rng):
         members[c] = list(fl)
         for i in fl:
             owner[i] = c
-    bins = {}
-
-    def key(p):
-        return tuple(min(nb - 1, int(p[k]/box[k]*nb))
-                     for k, nb in enumerate(nbin))
-
+    bins = Bins(box, reach)
     for i, p in enumerate(pos):
-        bins.setdefault(key(p), set()).add(i)
-
-    def neighbours(p):
-        b = key(p)
-        seen = set()
-        for dx in (-1, 0, 1):
-            for dy in (-1, 0, 1):
-                for dz in (-1, 0, 1):
-                    kk = ((b[0] + dx) % nbin[0], b[1] + dy, (b[2] + dz) % nbin[2])
-                    if kk not in seen:
-                        seen.add(kk)
-                        for j in bins.get(kk, ()):
-                            yield j
+        bins.add(i, p)
 
     moves = 0
     limit = 100*len(pts)       # moves; the tests' size takes 0.6 a sphere
@@ -185,13 +207,10 @@ def aggregate(pts, flocs, d, box, margin, rng):
         s_first, partner = s_max, None
         for i in members[c]:
             b = pos[i]
-            for j in neighbours(b):
+            for j in bins.near(b):
                 if owner[j] == c:
                     continue
-                a = pos[j]
-                w = [b[k] - a[k] for k in range(3)]
-                for k in (0, 2):
-                    w[k] -= box[k]*round(w[k]/box[k])
+                w = separation(b, pos[j], box)
                 wu = dot(w, u)
                 disc = wu*wu - dot(w, w) + d*d
                 if disc >= 0:
@@ -199,14 +218,14 @@ def aggregate(pts, flocs, d, box, margin, rng):
                     if -1e-9*d <= s < s_first:
                         s_first, partner = max(s, 0.0), j
         for i in members[c]:
-            bins[key(pos[i])].discard(i)
+            bins.remove(i, pos[i])
             for k in range(3):
                 pos[i][k] += s_first*u[k]
             for k in (0, 2):
                 pos[i][k] %= box[k]
                 if pos[i][k] >= box[k]:      # -1e-17 % L is L
                     pos[i][k] = 0.0
-            bins.setdefault(key(pos[i]), set()).add(i)
+            bins.add(i, pos[i])
         if partner is not None:
             other = owner[partner]
             for i in members[c]:
@@ -245,32 +264,12 @@ def main():
     rng = random.Random(seed)
     margin = 0.55*d
     gap2 = (1.05*d)**2
-    nbin = [max(1, int(L//(1.05*d))) for L in box]
-    bins = {}
+    bins = Bins(box, 1.05*d)
     pts = []
 
-    def key(p):
-        return tuple(min(nb - 1, int(p[k]/box[k]*nb))
-                     for k, nb in enumerate(nbin))
-
     def free(p):
-        b = key(p)
-        for dx in (-1, 0, 1):
-            for dy in (-1, 0, 1):
-                for dz in (-1, 0, 1):
-                    kk = [b[0] + dx, b[1] + dy, b[2] + dz]
-                    kk[0] %= nbin[0]
-                    kk[2] %= nbin[2]
-                    for q in bins.get(tuple(kk), ()):
-                        dd = 0
-                        for k in range(3):
-                            dk = abs(p[k] - q[k])
-                            if k != 1:
-                                dk = min(dk, box[k] - dk)
-                            dd += dk*dk
-                        if dd < gap2:
-                            return False
-        return True
+        return all(dot(w, w) >= gap2 for w in
+                   (separation(p, pts[j], box) for j in bins.near(p)))
 
     sizes = [size]*(n//size) + ([n % size] if n % size else [])
     for m in sizes:
@@ -289,8 +288,8 @@ def main():
                        (p[2] + c[2]) % box[2]) for p in shape]
             if all(free(p) for p in placed):
                 for p in placed:
+                    bins.add(len(pts), p)
                     pts.append(p)
-                    bins.setdefault(key(p), []).append(p)
                 break
         else:
             raise SystemExit('makeFlocs.py: cannot place floc %d of %d (%d'
