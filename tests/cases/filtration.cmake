@@ -164,7 +164,9 @@ add_filtration_check(flocculatedSuspensionInput
 # filtration.compare: filtrationCompare.py's flocculation rows, the
 #   filtration time's reduction and the Ruth slopes' ratio (the time's
 #   reduction where the cake dominates), on hand-built run pairs that
-#   follow Ruth's law, with a medium and without one (checkCompare.py)
+#   follow Ruth's law, with a medium and without one; and the
+#   Ergun-equivalent diameter of each cake, the hand-built ones' and
+#   Table 2's, against Ergun's law written forwards (checkCompare.py)
 add_filtration_check(compare "filtration comparison: all checks passed"
     /usr/bin/python3 ${filtrationDir}/checkCompare.py
     ${CMAKE_SOURCE_DIR}/tutorials/filtration)

@@ -8,6 +8,7 @@ seed 002 Fig. 6).  Reads each run's results.txt and filtration.csv
 usage: filtrationCompare.py runs/stable runs/flocculated
 """
 import csv
+import math
 import os
 import sys
 
@@ -22,6 +23,19 @@ PAPER = {
                     'force': (None, 5.27e-6)},
     'time_reduction': (-0.51, -0.43),
 }
+
+# Ergun's viscous term, the solver's drag below eps = 0.8 (gidaspow): a bed
+# of spheres of diameter d at porosity eps has the permeability
+# k = eps^3 d^2/(ERGUN_VISCOUS (1 - eps)^2)
+ERGUN_VISCOUS = 150.0
+
+
+def ergun_diameter(eps, k):
+    """The diameter [m] of the spheres of an Ergun bed with porosity eps and
+    permeability k [m^2]: what a cake's permeability says of its particles'
+    size once its porosity is accounted for (Table 2's four cakes give
+    3.89 um, the model's 5.8 um spheres more: README, Results)."""
+    return math.sqrt(ERGUN_VISCOUS*k*(1 - eps)**2/eps**3)
 
 
 def series(run):
@@ -75,6 +89,15 @@ def main():
             cells += [fmt(exp, scale), fmt(sim, scale),
                       fmt(float(r[v][key]), scale)]
         lines.append('| %s | %s |' % (label, ' | '.join(cells)))
+    cells = []
+    for v in ('stable', 'flocculated'):
+        cells += [fmt(ergun_diameter(eps, k), 1e6)
+                  for eps, k in zip(PAPER[v]['porosity'],
+                                    PAPER[v]['permeability'])]
+        cells.append(fmt(ergun_diameter(float(r[v]['cake_porosity']),
+                                        float(r[v]['permeability_m2'])), 1e6))
+    lines.append('| Ergun-equivalent diameter sqrt(%g k (1 - eps)^2/eps^3)'
+                 ' [um] | %s |' % (ERGUN_VISCOUS, ' | '.join(cells)))
     for label, key in (('coordination number', 'coordination_number'),
                        ('filtration time [ms]', 'filtration_time_s'),
                        ('cake height [um]', 'cake_height_m'),

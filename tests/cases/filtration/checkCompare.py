@@ -12,6 +12,15 @@ and, without a medium (b = 0: the cake is all the resistance), the two
 rows agree: both -50 %, the meaning of the second row.  Each to the
 table's three digits.
 
+The Ergun-equivalent diameter: each hand-built cake is given the
+permeability of Ergun's bed (viscous term, k = eps^3 d^2/(150
+(1 - eps)^2), written here forwards) of spheres of a known diameter at its
+porosity, 5.8 um at 0.42 (stable) and 4.0 um at 0.5 (flocculated): the
+table gives them back within its three digits (0.5 %); and each cell of
+Table 2's columns, put back into the same law at that column's porosity,
+gives the column's permeability within 0.5 % (the rounding of the
+diameter to three digits, at most 0.26 % in k).
+
 usage: checkCompare.py tutorials/filtration workDir
 """
 import os
@@ -20,14 +29,25 @@ import sys
 
 V_END, B = 4e-13, 1.5e9
 SLOPES = {'stable': 8e20, 'flocculated': 4e20}
+# (porosity, diameter of the Ergun bed [m]) of each hand-built cake
+CAKES = {'stable': (0.42, 5.8e-6), 'flocculated': (0.5, 4.0e-6)}
+ERGUN_LABEL = 'Ergun-equivalent diameter'
+DIAMETER_TOL = 0.005
 
 
-def write_run(folder, a, b):
+def ergun_permeability(eps, d):
+    """Ergun's viscous term: the permeability [m^2] of a bed of spheres of
+    diameter d [m] at porosity eps."""
+    return eps**3*d*d/(150*(1 - eps)**2)
+
+
+def write_run(folder, a, b, cake):
     os.makedirs(folder, exist_ok=True)
     t_end = a*V_END**2 + b*V_END
     values = {'particles': 795, 'filtration_time_s': t_end,
               'ruth_slope_s_m6': a, 'ruth_intercept_s_m3': b,
-              'cake_porosity': 0.42, 'permeability_m2': 7e-14,
+              'cake_porosity': cake[0],
+              'permeability_m2': ergun_permeability(*cake),
               'mean_contact_force_N': 6.5e-7, 'coordination_number': 5.2,
               'cake_height_m': 4.2e-5, 'ruth_r2': 1.0,
               'medium_resistance_fitted_1_m': 1e9}
@@ -50,10 +70,12 @@ def cell(table, label, column):
 
 def main():
     tutorial, work = sys.argv[1], sys.argv[2]
+    sys.path.insert(0, tutorial)
+    from filtrationCompare import PAPER
     failures = 0
     for b in (B, 0.0):
         folder = os.path.join(work, 'medium' if b else 'noMedium')
-        times = {v: write_run(os.path.join(folder, v), a, b)
+        times = {v: write_run(os.path.join(folder, v), a, b, CAKES[v])
                  for v, a in SLOPES.items()}
         subprocess.run([sys.executable,
                         os.path.join(tutorial, 'filtrationCompare.py'),
@@ -76,6 +98,28 @@ def main():
             failures += not ok
             print('%s: b = %g, %s, column %d: %s (expected %s)'
                   % ('ok' if ok else 'FAIL', b, label, column, got, want))
+        # the model's columns: the diameters the cakes were built with
+        for column, v in ((3, 'stable'), (6, 'flocculated')):
+            got = float(cell(table, ERGUN_LABEL, column))*1e-6
+            want = CAKES[v][1]
+            ok = abs(got/want - 1) <= DIAMETER_TOL
+            failures += not ok
+            print('%s: %s, column %d: %.4g um (built with %.4g um)'
+                  % ('ok' if ok else 'FAIL', ERGUN_LABEL, column, got*1e6,
+                     want*1e6))
+        # Table 2's columns: back through Ergun's law to their permeability
+        for column, v, source in ((1, 'stable', 0), (2, 'stable', 1),
+                                  (4, 'flocculated', 0),
+                                  (5, 'flocculated', 1)):
+            eps = PAPER[v]['porosity'][source]
+            k = PAPER[v]['permeability'][source]
+            d = float(cell(table, ERGUN_LABEL, column))*1e-6
+            ok = abs(ergun_permeability(eps, d)/k - 1) <= DIAMETER_TOL
+            failures += not ok
+            print('%s: %s, column %d: %.4g um gives k %.4g m^2 at eps %g'
+                  ' (Table 2: %.4g)' % ('ok' if ok else 'FAIL', ERGUN_LABEL,
+                                        column, d*1e6,
+                                        ergun_permeability(eps, d), eps, k))
     if failures:
         sys.exit('%d failures' % failures)
     print('filtration comparison: all checks passed')
