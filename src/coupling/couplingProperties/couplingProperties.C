@@ -3,6 +3,7 @@
 #include "OSspecific.H"
 #include "keywordCheck.H"
 #include "Tuple2.H"
+#include "Pair.H"
 #include "colloidModels/exchangeStability.H"
 
 const Foam::dictionary& Foam::couplingProperties::requiredSubDict
@@ -64,6 +65,8 @@ Foam::couplingProperties::couplingProperties(const objectRegistry& obr)
     rhoFluid_(0),
     muFluid_(0),
     particleDiameter_(0),
+    smallestDiameter_(0),
+    largestDiameter_(0),
     particleDensity_(0),
     demTimeStep_(0),
     couplingInterval_(0),
@@ -206,6 +209,27 @@ Foam::couplingProperties::couplingProperties(const objectRegistry& obr)
     const dictionary& particles = requiredSubDict(dict, "particles");
     particleDiameter_ = positiveScalar(particles, "diameter");
     particleDensity_ = positiveScalar(particles, "density");
+    smallestDiameter_ = largestDiameter_ = particleDiameter_;
+    if (particles.found("diameterRange"))
+    {
+        const Pair<scalar> range = particles.get<Pair<scalar>>("diameterRange");
+        if
+        (
+            !(range.first() > 0)
+         || !(range.first() <= particleDiameter_)
+         || !(particleDiameter_ <= range.second())
+        )
+        {
+            FatalIOErrorInFunction(particles)
+                << "Keyword 'diameterRange' in " << particles.name()
+                << " is (" << range.first() << " " << range.second()
+                << ") m; allowed: (smallest largest) with 0 < smallest <="
+                << " diameter (" << particleDiameter_ << " m) <= largest"
+                << exit(FatalIOError);
+        }
+        smallestDiameter_ = range.first();
+        largestDiameter_ = range.second();
+    }
 
     const dictionary& dem = requiredSubDict(dict, "DEM");
     if (!dem.found("script"))
@@ -344,7 +368,7 @@ Foam::couplingProperties::couplingProperties(const objectRegistry& obr)
         );
     }
     keywordCheck(fluid, {"rho", "mu", "nu"}, true);
-    keywordCheck(particles, {"diameter", "density"}, true);
+    keywordCheck(particles, {"diameter", "density", "diameterRange"}, true);
     keywordCheck
     (
         dem,

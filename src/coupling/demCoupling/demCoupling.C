@@ -94,19 +94,35 @@ void Foam::demCoupling::checkTimeStep() const
             << exit(FatalIOError);
     }
 
-    // Relaxation time m/K of the particles of the settings
-    const scalar d = props_.particleDiameter();
-    const scalar mass =
-        props_.particleDensity()*constant::mathematical::pi*pow3(d)/6;
-    const scalar tau = mass/drag_->K(restContext(0.5*d, mass, Zero));
-    Info<< "Time-step limit, Stokes relaxation time m/K of the particles: "
-        << tau << " s; DEM timeStep " << props_.demTimeStep() << " s is "
-        << props_.demTimeStep()/tau << " of it (the DEM prints its own"
-        << " limits in log.liggghts)" << endl;
-    checkRelaxationTime(tau);
-    if (props_.twoWay())
+    // Relaxation time m/K of the particles of the settings; with a size
+    // range at both its ends (m/K grows as d^2 with Stokes' drag, but a
+    // drag law need not keep that order), each end checked
+    const bool sized =
+        props_.smallestDiameter() < props_.largestDiameter();
+    for
+    (
+        const scalar d
+      : sized
+      ? std::vector<scalar>{props_.smallestDiameter(), props_.largestDiameter()}
+      : std::vector<scalar>{props_.particleDiameter()}
+    )
     {
-        checkExchangeStability(mass);
+        const scalar mass =
+            props_.particleDensity()*constant::mathematical::pi*pow3(d)/6;
+        const scalar tau = mass/drag_->K(restContext(0.5*d, mass, Zero));
+        Info<< "Time-step limit, Stokes relaxation time m/K of the particles";
+        if (sized)
+        {
+            Info<< " of diameter " << d << " m";
+        }
+        Info<< ": " << tau << " s; DEM timeStep " << props_.demTimeStep()
+            << " s is " << props_.demTimeStep()/tau << " of it (the DEM"
+            << " prints its own limits in log.liggghts)" << endl;
+        checkRelaxationTime(tau, d);
+        if (props_.twoWay())
+        {
+            checkExchangeStability(d);
+        }
     }
     reportMeasuredErrors(runTime);
 
@@ -121,7 +137,11 @@ void Foam::demCoupling::checkTimeStep() const
 }
 
 
-void Foam::demCoupling::checkRelaxationTime(const scalar tau) const
+void Foam::demCoupling::checkRelaxationTime
+(
+    const scalar tau,
+    const scalar d
+) const
 {
     // The DEM applies the drag implicitly (stable at any step), but the
     // particle's inertia is resolved, and the drift accurate to about 1 %,
@@ -131,8 +151,18 @@ void Foam::demCoupling::checkRelaxationTime(const scalar tau) const
         const dictionary& demDict = props_.subDict("DEM");
         FatalIOErrorInFunction(demDict)
             << "Keyword 'timeStep' in " << demDict.name() << " is "
-            << props_.demTimeStep() << " s, longer than the particle"
-            << " relaxation time m/K = " << tau << " s: the particle's"
+            << props_.demTimeStep() << " s, longer than the relaxation"
+            << " time m/K = " << tau << " s of ";
+        if (d > 0)
+        {
+            FatalIOError<< "particles of diameter " << d << " m";
+        }
+        else
+        {
+            FatalIOError<< "the run's particles";
+        }
+        FatalIOError
+            << ": the particle's"
             << " inertia would not be resolved. Allowed range: timeStep <= "
             << tau
             << exit(FatalIOError);
@@ -140,14 +170,15 @@ void Foam::demCoupling::checkRelaxationTime(const scalar tau) const
 }
 
 
-void Foam::demCoupling::checkExchangeStability(const scalar mass) const
+void Foam::demCoupling::checkExchangeStability(const scalar d) const
 {
     // The fluid step and its DEM interval see each other a step late; over
     // free particles (looser than random loose packing, or than the case's
     // twoWay/freeFluidFraction) the lag amplifies a disturbance once the
     // fluid step is about a relaxation time (exchangeStability.H).  Model
     // B's drag is K/eps.
-    const scalar d = props_.particleDiameter();
+    const scalar mass =
+        props_.particleDensity()*constant::mathematical::pi*pow3(d)/6;
     const bool modelB = props_.modelB();
     const auto tau = [&](const double eps)
     {
@@ -166,8 +197,12 @@ void Foam::demCoupling::checkExchangeStability(const scalar mass) const
         );
 
     const scalar couplingDt = props_.couplingTimeStep();
-    Info<< "Time-step limit, explicit two-way exchange over free particles"
-        << " at fluid fractions " << epsFree << " to 1 (twoWay/"
+    Info<< "Time-step limit, explicit two-way exchange over free particles";
+    if (props_.smallestDiameter() < props_.largestDiameter())
+    {
+        Info<< " of diameter " << d << " m";
+    }
+    Info<< " at fluid fractions " << epsFree << " to 1 (twoWay/"
         << "freeFluidFraction): ";
     if (std::isinf(limit.step))
     {
@@ -763,10 +798,11 @@ void Foam::demCoupling::countNewParticles()
     double* seen = dem.scalarProperty("colloidSeen");
 
     // The particles of the settings: the start-up checks (time-step
-    // limits, the DEM's colloid_diameter) are made for them
+    // limits at both ends of diameterRange) are made for them
     const double* r = dem.radius();
     const double* m = dem.rmass();
-    const scalar d = props_.particleDiameter();
+    const scalar dMin = props_.smallestDiameter();
+    const scalar dMax = props_.largestDiameter();
     const scalar rho = props_.particleDensity();
     label nNew = 0;
     label nOther = 0;
@@ -785,7 +821,8 @@ void Foam::demCoupling::countNewParticles()
                /(constant::mathematical::pi/6*pow3(di));
             if
             (
-                mag(di - d) > 1e-6*d
+                di < (1 - 1e-6)*dMin
+             || di > (1 + 1e-6)*dMax
              || mag(rhoi - rho) > 1e-6*rho
             )
             {
@@ -817,10 +854,21 @@ void Foam::demCoupling::countNewParticles()
             << " DEM (e.g. diameter " << returnReduce(otherD, maxOp<scalar>())
             << " m, density " << returnReduce(otherRho, maxOp<scalar>())
             << " kg/m^3) are not those of " << particles.name()
-            << " (diameter " << d << " m, density " << rho << " kg/m^3),"
-            << " for which the start-up checks were made: set the DEM's"
-            << " particles from colloid_diameter and colloid_density, or"
-            << " change 'diameter' and 'density' there"
+            << " (";
+        if (dMin < dMax)
+        {
+            FatalIOError
+                << "diameterRange (" << dMin << " " << dMax << ") m";
+        }
+        else
+        {
+            FatalIOError<< "diameter " << dMin << " m";
+        }
+        FatalIOError
+            << ", density " << rho << " kg/m^3), for which the start-up"
+            << " checks were made: set the DEM's particles from"
+            << " colloid_diameter and colloid_density, or change 'diameter',"
+            << " 'diameterRange' and 'density' there"
             << exit(FatalIOError);
     }
 }
@@ -1243,8 +1291,13 @@ Foam::demCoupling::demCoupling
 
     Info<< "Coupling: fluid rho " << props_.rhoFluid() << " kg/m^3, mu "
         << props_.muFluid() << " Pa s; particles d "
-        << props_.particleDiameter() << " m, rho "
-        << props_.particleDensity() << " kg/m^3" << nl
+        << props_.particleDiameter() << " m";
+    if (props_.smallestDiameter() < props_.largestDiameter())
+    {
+        Info<< " (from " << props_.smallestDiameter() << " to "
+            << props_.largestDiameter() << " m)";
+    }
+    Info<< ", rho " << props_.particleDensity() << " kg/m^3" << nl
         << "    DEM step " << props_.demTimeStep() << " s, "
         << props_.couplingInterval() << " DEM steps per coupling step"
         << nl << endl;

@@ -49,7 +49,7 @@ case $variant in
         # relaxation time 1.39e-7 s; 2e-7 s x 10 with deltaT to match
         foamDictionary $props -entry DEM/timeStep -set 2e-07 > /dev/null
         foamDictionary system/controlDict -entry deltaT -set 2e-06 > /dev/null
-        expect="Keyword 'timeStep' in .*couplingProperties.DEM\"? is 2e-07 s, longer than the particle relaxation time" ;;
+        expect="Keyword 'timeStep' in .*couplingProperties.DEM\"? is 2e-07 s, longer than the relaxation time" ;;
     feedUnknownPatch|feedSolidsFraction|feedInterval|feedNoInflow)
         # the feed's settings (particleFeed): through the x = 0 side
         patch=sides; fraction=0.05; interval=2e-7

@@ -1,21 +1,23 @@
 """Write system/blockMeshDict of the settling box: a cube of side 64 mm
-around (32, 32, 32) mm, with a central block of 8 x 8 x 8 uniform cells of
-size delta and, outside it, cells growing geometrically to the walls (so
-the walls are far, 320 particle diameters, at a few thousand cells).
+around (32, 32, 32) mm, with a central block of 8 x 8 x 8 (or nInner^3)
+uniform cells of size delta and, outside it, cells growing geometrically
+to the walls (so the walls are far, 320 particle diameters, at a few
+thousand cells).
 
-usage: makeSettlingMesh.py caseDir delta[m]
+usage: makeSettlingMesh.py caseDir delta[m] [nInner]
 """
 import os
 import sys
 
 L = 64e-3       # box side [m]
-N_IN = 8        # uniform cells across the centre
+N_IN = 8        # uniform cells across the centre (default)
 N_OUT = 6         # graded cells on each side
 
 
 def main():
     case, delta = sys.argv[1], float(sys.argv[2])
-    inner = N_IN*delta
+    n_in = int(sys.argv[3]) if len(sys.argv) > 3 else N_IN
+    inner = n_in*delta
     outer = 0.5*(L - inner)
     # first outer cell = delta: solve delta (r^n - 1)/(r - 1) = outer for r
     lo, hi = 1.0 + 1e-9, 10.0
@@ -28,8 +30,8 @@ def main():
     ratio = r**(N_OUT - 1)       # last/first cell of a section
     f_out = outer/L
     grading = ('((%.10g %d %.10g) (%.10g %d 1) (%.10g %d %.10g))'
-               % (f_out, N_OUT, 1/ratio, inner/L, N_IN, f_out, N_OUT, ratio))
-    n = N_IN + 2*N_OUT
+               % (f_out, N_OUT, 1/ratio, inner/L, n_in, f_out, N_OUT, ratio))
+    n = n_in + 2*N_OUT
     text = """FoamFile { version 2.0; format ascii; class dictionary; object blockMeshDict; }
 
 // Written by makeSettlingMesh.py: closed box of %(L)g m, centre cells of
