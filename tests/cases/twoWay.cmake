@@ -204,23 +204,24 @@ set_tests_properties(case.twoWay.settling.parallel PROPERTIES
 #   one run (particles/diameterRange (5e-5 1e-4)), 200 large diameters
 #   apart in the closed box, cells of 10 large diameters, kernel radius 2
 #   cells, self-induced velocity removed: each at its own Stokes velocity
-#   within 2 % (measured -1.09 % and -0.70 %).
-# twoWay.badInput.diameterRange{TooSmall,ExcludesDiameter}: a range whose
-#   smallest spheres relax faster than the DEM step (20 um: 5.6e-7 s
-#   against 2e-6 s), and one without the particles' diameter, stop the
-#   solver at start-up naming file, keyword and value.
+#   within 2 % (measured -1.09 % and -0.70 %; the one-sphere test's
+#   centred sphere -0.24 %: these sit 21.7 mm from a wall, not 32 mm, with
+#   graded cells nearer; which of the two costs the 0.9 % is not
+#   separated).
+# twoWay.badInput.diameterRange.*: a range whose smallest spheres relax
+#   faster than the DEM step (tooSmall, 20 um: 5.6e-7 s against 2e-6 s),
+#   one without the particles' diameter (excludesDiameter), and a sphere of
+#   the DEM script outside the range (outsideRange, 40 um) stop the solver
+#   at start-up naming file, keyword and value.
 add_test(NAME case.twoWay.settlingSizes
     COMMAND ${twoWayDir}/runSettlingSizesTest.sh ${twoWayWork}/settlingSizes 0.02)
 set_tests_properties(case.twoWay.settlingSizes PROPERTIES
     TIMEOUT 300 LABELS "case;twoWay")
-foreach(variant TooSmall ExcludesDiameter)
-    string(SUBSTRING ${variant} 0 1 first)
-    string(TOLOWER ${first} first)
-    string(SUBSTRING ${variant} 1 -1 rest)
-    add_test(NAME case.twoWay.badInput.diameterRange${variant}
+foreach(variant tooSmall excludesDiameter outsideRange)
+    add_test(NAME case.twoWay.badInput.diameterRange.${variant}
         COMMAND ${twoWayDir}/runSettlingSizesTest.sh
-                ${twoWayWork}/diameterRange${variant} 0.02 ${first}${rest})
-    set_tests_properties(case.twoWay.badInput.diameterRange${variant}
+                ${twoWayWork}/diameterRange_${variant} 0.02 ${variant})
+    set_tests_properties(case.twoWay.badInput.diameterRange.${variant}
         PROPERTIES TIMEOUT 60 LABELS "case;twoWay")
 endforeach()
 

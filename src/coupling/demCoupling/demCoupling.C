@@ -97,21 +97,18 @@ void Foam::demCoupling::checkTimeStep() const
     // Relaxation time m/K of the particles of the settings; with a size
     // range at both its ends (m/K grows as d^2 with Stokes' drag, but a
     // drag law need not keep that order), each end checked
-    const bool sized =
-        props_.smallestDiameter() < props_.largestDiameter();
-    for
+    const scalarList diameters
     (
-        const scalar d
-      : sized
-      ? std::vector<scalar>{props_.smallestDiameter(), props_.largestDiameter()}
-      : std::vector<scalar>{props_.particleDiameter()}
-    )
+        props_.sizeRange()
+      ? scalarList({props_.smallestDiameter(), props_.largestDiameter()})
+      : scalarList({props_.particleDiameter()})
+    );
+    for (const scalar d : diameters)
     {
-        const scalar mass =
-            props_.particleDensity()*constant::mathematical::pi*pow3(d)/6;
+        const scalar mass = settingsMass(d);
         const scalar tau = mass/drag_->K(restContext(0.5*d, mass, Zero));
         Info<< "Time-step limit, Stokes relaxation time m/K of the particles";
-        if (sized)
+        if (props_.sizeRange())
         {
             Info<< " of diameter " << d << " m";
         }
@@ -134,6 +131,12 @@ void Foam::demCoupling::checkTimeStep() const
             << " must be 'no': the coupling step is fixed by the DEM"
             << exit(FatalIOError);
     }
+}
+
+
+Foam::scalar Foam::demCoupling::settingsMass(const scalar d) const
+{
+    return props_.particleDensity()*constant::mathematical::pi*pow3(d)/6;
 }
 
 
@@ -177,8 +180,7 @@ void Foam::demCoupling::checkExchangeStability(const scalar d) const
     // twoWay/freeFluidFraction) the lag amplifies a disturbance once the
     // fluid step is about a relaxation time (exchangeStability.H).  Model
     // B's drag is K/eps.
-    const scalar mass =
-        props_.particleDensity()*constant::mathematical::pi*pow3(d)/6;
+    const scalar mass = settingsMass(d);
     const bool modelB = props_.modelB();
     const auto tau = [&](const double eps)
     {
@@ -198,7 +200,7 @@ void Foam::demCoupling::checkExchangeStability(const scalar d) const
 
     const scalar couplingDt = props_.couplingTimeStep();
     Info<< "Time-step limit, explicit two-way exchange over free particles";
-    if (props_.smallestDiameter() < props_.largestDiameter())
+    if (props_.sizeRange())
     {
         Info<< " of diameter " << d << " m";
     }
@@ -855,7 +857,7 @@ void Foam::demCoupling::countNewParticles()
             << " m, density " << returnReduce(otherRho, maxOp<scalar>())
             << " kg/m^3) are not those of " << particles.name()
             << " (";
-        if (dMin < dMax)
+        if (props_.sizeRange())
         {
             FatalIOError
                 << "diameterRange (" << dMin << " " << dMax << ") m";
@@ -1292,7 +1294,7 @@ Foam::demCoupling::demCoupling
     Info<< "Coupling: fluid rho " << props_.rhoFluid() << " kg/m^3, mu "
         << props_.muFluid() << " Pa s; particles d "
         << props_.particleDiameter() << " m";
-    if (props_.smallestDiameter() < props_.largestDiameter())
+    if (props_.sizeRange())
     {
         Info<< " (from " << props_.smallestDiameter() << " to "
             << props_.largestDiameter() << " m)";

@@ -31,6 +31,10 @@ V_END, B = 4e-13, 1.5e9
 SLOPES = {'stable': 8e20, 'flocculated': 4e20}
 # (porosity, diameter of the Ergun bed [m]) of each hand-built cake
 CAKES = {'stable': (0.42, 5.8e-6), 'flocculated': (0.5, 4.0e-6)}
+# Seed 002 Table 2, (porosity, permeability [m^2]) by the table's column:
+# stable experiment and simulation, flocculated experiment and simulation
+TABLE2 = {1: (0.43, 2.47e-14), 2: (0.449, 3.0e-14), 4: (0.601, 13.8e-14),
+          5: (0.654, 23.6e-14)}
 ERGUN_LABEL = 'Ergun-equivalent diameter'
 DIAMETER_TOL = 0.005
 
@@ -70,8 +74,6 @@ def cell(table, label, column):
 
 def main():
     tutorial, work = sys.argv[1], sys.argv[2]
-    sys.path.insert(0, tutorial)
-    from filtrationCompare import PAPER
     failures = 0
     for b in (B, 0.0):
         folder = os.path.join(work, 'medium' if b else 'noMedium')
@@ -98,6 +100,8 @@ def main():
             failures += not ok
             print('%s: b = %g, %s, column %d: %s (expected %s)'
                   % ('ok' if ok else 'FAIL', b, label, column, got, want))
+        if not b:
+            continue
         # the model's columns: the diameters the cakes were built with
         for column, v in ((3, 'stable'), (6, 'flocculated')):
             got = float(cell(table, ERGUN_LABEL, column))*1e-6
@@ -108,11 +112,7 @@ def main():
                   % ('ok' if ok else 'FAIL', ERGUN_LABEL, column, got*1e6,
                      want*1e6))
         # Table 2's columns: back through Ergun's law to their permeability
-        for column, v, source in ((1, 'stable', 0), (2, 'stable', 1),
-                                  (4, 'flocculated', 0),
-                                  (5, 'flocculated', 1)):
-            eps = PAPER[v]['porosity'][source]
-            k = PAPER[v]['permeability'][source]
+        for column, (eps, k) in TABLE2.items():
             d = float(cell(table, ERGUN_LABEL, column))*1e-6
             ok = abs(ergun_permeability(eps, d)/k - 1) <= DIAMETER_TOL
             failures += not ok

@@ -10,9 +10,12 @@ it must also have stopped changing (the last two files within a tenth of
 the tolerance).
 
 With a reference case (the same run, serial), the velocities must also
-agree within 0.1 %.
+agree within 0.1 %.  With --diameters, the spheres' diameters (by id) must
+be these: the Stokes velocities are of the sizes the DEM script set, not
+only of those the solver wrote.
 
 usage: checkSettlingVelocity.py caseDir tolerance [referenceCaseDir]
+       [--diameters d1,d2,...]   (diameters in m)
 """
 import os
 import re
@@ -28,7 +31,13 @@ def number(text, key):
 
 
 def main():
-    case, tol = sys.argv[1], float(sys.argv[2])
+    args = sys.argv[1:]
+    expected = None
+    if '--diameters' in args:
+        k = args.index('--diameters')
+        expected = [float(x) for x in args[k + 1].split(',')]
+        args = args[:k] + args[k + 2:]
+    case, tol = args[0], float(args[1])
     props = open(os.path.join(case, 'constant', 'couplingProperties')).read()
     fluid = props[props.index('fluid'):]
     particles = props[props.index('particles'):]
@@ -40,6 +49,12 @@ def main():
     files = particleCloud.write_times(case)
     clouds = [particleCloud.read(f) for f in files[-2:]]
     ok = True
+    if expected is not None:
+        got = [2*a for a in clouds[-1]['radius']]
+        same = len(got) == len(expected) and all(
+            abs(g/e - 1) <= 1e-9 for g, e in zip(got, expected))
+        print('diameters %s m (expected %s)' % (got, expected))
+        ok &= same
     for i, a in enumerate(clouds[-1]['radius']):
         v_s = (rho_p - rho_f)*g*(2*a)**2/(18*mu)
         vy = [cloud['velocity'][i][1] for cloud in clouds]
@@ -49,11 +64,11 @@ def main():
               ' m/s: %+.2f %% (tolerance %.1f %%); last change %.2e'
               % (2*a, vy[-1], v_s, 100*err, 100*tol, drift))
         ok &= abs(err) <= tol and drift <= 0.1*tol
-    if len(sys.argv) > 3:
-        ref = particleCloud.read(particleCloud.latest(sys.argv[3]))['velocity']
+    if len(args) > 2:
+        ref = particleCloud.read(particleCloud.latest(args[2]))['velocity']
         for i, v in enumerate(clouds[-1]['velocity']):
             print('against %s: %.6g m/s (%+.2e relative)'
-                  % (sys.argv[3], ref[i][1], v[1]/ref[i][1] - 1))
+                  % (args[2], ref[i][1], v[1]/ref[i][1] - 1))
             ok &= abs(v[1]/ref[i][1] - 1) <= 1e-3
     print('PASS' if ok else 'FAIL')
     return 0 if ok else 1

@@ -19,6 +19,11 @@ def main():
     n_in = int(sys.argv[3]) if len(sys.argv) > 3 else N_IN
     inner = n_in*delta
     outer = 0.5*(L - inner)
+    if outer <= N_OUT*delta:
+        raise SystemExit('makeSettlingMesh.py: %d centre cells of %g m leave'
+                         ' %g m to each wall, not more than %d cells of that'
+                         ' size: fewer or smaller centre cells'
+                         % (n_in, delta, outer, N_OUT))
     # first outer cell = delta: solve delta (r^n - 1)/(r - 1) = outer for r
     lo, hi = 1.0 + 1e-9, 10.0
     for _ in range(200):

@@ -1,14 +1,17 @@
 #!/bin/bash
 # Spheres of two sizes settling side by side in one two-way run
 # (particles/diameterRange): d = 100 um and 50 um, 20 mm (200 large
-# diameters) apart across the centre of the closed box, in a centre block
-# of 24^3 cells of 10 large diameters; each at its own terminal velocity
-# (checkSettlingVelocity.py).  Bad ranges stop the solver at start-up,
-# naming file, keyword and value (common/expectBadInput.sh): tooSmall, a
-# range whose smallest sphere relaxes faster than the DEM step;
-# excludesDiameter, a range without the particles' 'diameter'.
+# diameters) apart across the centre of the closed box (x = 22.31 and
+# 42.31 mm, -9.69 and +10.31 mm from the centre; walls 21.7 mm from the
+# nearer), in a centre block of 24^3 cells of 10 large diameters; each at
+# its own terminal velocity (checkSettlingVelocity.py, the spheres' sizes
+# checked).  Bad settings stop the solver at start-up, naming file,
+# keyword and value (common/expectBadInput.sh): tooSmall, a range whose
+# smallest sphere relaxes faster than the DEM step; excludesDiameter, a
+# range without the particles' 'diameter'; outsideRange, a sphere of the
+# DEM script below the range.
 #
-# usage: runSettlingSizesTest.sh workDir tolerance [tooSmall|excludesDiameter]
+# usage: runSettlingSizesTest.sh workDir tolerance [tooSmall|excludesDiameter|outsideRange]
 set -e
 work=$1
 tol=$2
@@ -43,9 +46,14 @@ case $variant in
         foamDictionary $props -entry particles/diameterRange -add "(2e-05 5e-05)" > /dev/null
         expect="Keyword 'diameterRange' in .*couplingProperties.particles\"? is \(2e-05 5e-05\) m; allowed: \(smallest largest\) with 0 < smallest <= diameter \(0.0001 m\) <= largest"
         source "$here/../common/expectBadInput.sh" ;;
+    outsideRange)
+        foamDictionary $props -entry particles/diameterRange -add "(5e-05 0.0001)" > /dev/null
+        sed -i "s/^set             atom 2 diameter 50 /set             atom 2 diameter 40 /" constant/DEM/in.liggghts
+        expect="1 particles of the DEM \(e.g. diameter 4e-05 m, density .*\) are not those of .*particles\"? \(diameterRange \(5e-05 0.0001\) m, density 2500 kg/m\^3\)"
+        source "$here/../common/expectBadInput.sh" ;;
 esac
 foamDictionary $props -entry particles/diameterRange -add "(5e-05 0.0001)" > /dev/null
 
 runSolver 1
 
-python3 "$here/checkSettlingVelocity.py" "$work" "$tol"
+python3 "$here/checkSettlingVelocity.py" "$work" "$tol" --diameters 1e-4,5e-5
