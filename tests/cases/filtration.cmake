@@ -154,6 +154,22 @@ add_filtration_check(gelSuspension "gel suspension: all checks passed"
     /usr/bin/python3 ${filtrationDir}/checkGelSuspension.py
     ${CMAKE_SOURCE_DIR}/tutorials/filtration/makeFlocs.py)
 
+# filtration.finesSuspension: suspensions with fines (--fines of
+#   makeSuspension.py and makeFlocs.py, what fineVolumeFraction asks for):
+#   the counts of both sizes, no overlap, the random suspension's gaps and
+#   wall margins, the flocs' clusters of touching spheres with the fines
+#   mixed in, the gel one tree, a fines' size not below the spheres'
+#   refused (checkFinesSuspension.py)
+add_filtration_check(finesSuspension "fines suspension: all checks passed"
+    /usr/bin/python3 ${filtrationDir}/checkFinesSuspension.py
+    ${CMAKE_SOURCE_DIR}/tutorials)
+
+# filtration.finesInput: fineVolumeFraction and fineDiameter reach the
+#   suspension's counts and the coupling's diameterRange; bad values stop
+#   prepareRun.sh with a message and no DEM files (runFinesInputTest.sh)
+add_filtration_check(finesInput "fines input: all checks passed"
+    ${filtrationDir}/runFinesInputTest.sh)
+
 # filtration.flocculatedSuspensionInput: flocculatedSuspension flocs|gel
 #   reaches makeFlocs.py; a bad value stops prepareRun.sh with a message
 #   and no DEM files

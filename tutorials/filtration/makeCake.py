@@ -24,7 +24,12 @@ def main():
     um = 1e6
     width = eval_entry(os.path.join(run, 'system', 'filtrationParameters'),
                        'width')
-    d = 2*rad[0]*um
+    # each sphere's diameter as set (particleDiameter, or fineDiameter
+    # for the fines): not the cloud's written digits
+    params = os.path.join(run, 'system', 'filtrationParameters')
+    sizes = [eval_entry(params, key)*um
+             for key in ('particleDiameter', 'fineDiameter')]
+    d = [min(sizes, key=lambda s: abs(s - 2*r*um)) for r in rad]
     top = max((p[1] + r)*um for p, r in zip(pos, rad))
     piston = top + 0.05
     pts = [(p[0]*um % width, p[1]*um, p[2]*um % width) for p in pos]

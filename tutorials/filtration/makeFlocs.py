@@ -1,5 +1,6 @@
 """Write a LIGGGHTS data file (units micro) of a flocculated suspension:
-n spheres of one diameter grouped into flocs of floc_size spheres each,
+n spheres of one diameter (and, with --fines, n_f smaller ones, in the
+flocs at random) grouped into flocs of floc_size spheres each,
 the flocs at random places and orientations in a column (periodic in x
 and z, walls at the y faces), the same file for the same seed.
 
@@ -13,10 +14,10 @@ Each floc is built by ballistic cluster-cluster aggregation (Jullien &
 Kolb 1984; fractal dimension about 1.9): clusters, starting from single
 spheres, are merged two at a time, smallest first; one approaches the
 other along a random line with a random offset and stops where two of
-their spheres first touch (centres exactly one diameter apart).  Spheres
-of different flocs are at least 5 % of a diameter apart (until the gel
-below joins them); centres at least a radius plus 5 % of a diameter from
-the y faces.
+their spheres first touch (centres exactly the sum of their radii apart).
+Spheres of different flocs are at least 5 % of the smaller one's diameter
+apart (until the gel below joins them); centres at least a radius plus 5 %
+of the largest diameter from the y faces.
 
 With the last argument "gel" the placed flocs then aggregate further,
 cluster with cluster, until one network holds every sphere: what the
@@ -27,15 +28,16 @@ t/t_half, after 20 to 33 half-times (above), 47 to 77 minutes after the
 pH is set.  The aggregation is diffusion-limited (Meakin 1983; Kolb,
 Botet & Jullien 1983): a cluster, chosen with probability proportional
 to its mobility m^(-1/D) (Stokes-Einstein with a radius growing as
-m^(1/D), D = 1.8), steps a quarter of a diameter in a random direction
+m^(1/D), D = 1.8), steps a quarter of the smallest diameter in a random
+direction
 (at the y faces' margin the step's y part is cut short, so the cluster
 slides along the wall) and, where one of its spheres first touches a
-sphere of another cluster on the way, stops there (centres one diameter
-apart) and joins it.  The x and z periods must be at least 2.5
-diameters (one image of each sphere within a step's reach).
+sphere of another cluster on the way, stops there (in contact) and
+joins it.  The x and z periods must be at least 2.5 diameters (one image
+of each sphere within a step's reach).
 
 usage: makeFlocs.py out.data n diameter Lx Ly Lz seed floc_size [gel]
-       (lengths in um)
+       [--fines n_f d_f]   (lengths in um)
 """
 import math
 import os
@@ -46,7 +48,7 @@ import sys
 sys.path.insert(0, os.path.join(os.environ.get(
     'COLLOIDFOAM_TUTORIALS',
     os.path.join(os.path.dirname(os.path.abspath(__file__)), '..')), 'twoWay'))
-from makeSuspension import write_data  # noqa: E402
+from makeSuspension import fines_option, least_distance, write_data  # noqa: E402
 
 
 def unit_vector(rng):
@@ -69,8 +71,11 @@ def centred(points):
     return [sub(p, c) for p in points]
 
 
-def merge(a, b, d, rng):
-    """b brought to a along a random line until first contact."""
+def merge(a, b, rng):
+    """Cluster b brought to a along a random line until first contact; a
+    cluster is (centres, diameters)."""
+    (a, da), (b, db) = a, b
+    d = max(da + db)
     ra = max(math.sqrt(dot(p, p)) for p in a)
     rb = max(math.sqrt(dot(p, p)) for p in b)
     while True:
@@ -86,14 +91,16 @@ def merge(a, b, d, rng):
         start = ra + rb + 2*d
         o = [start*u[k] + r*(math.cos(t)*e1[k] + math.sin(t)*e2[k])
              for k in range(3)]
-        # b_j + o - s u touches a_i where |w - s u| = d, w = b_j + o - a_i
+        # b_j + o - s u touches a_i where |w - s u| = (d_i + d_j)/2,
+        # w = b_j + o - a_i
         s_first = None
-        for bj in b:
+        for bj, dj in zip(b, db):
             bo = (bj[0] + o[0], bj[1] + o[1], bj[2] + o[2])
-            for ai in a:
+            for ai, di in zip(a, da):
                 w = sub(bo, ai)
                 wu = dot(w, u)
-                disc = wu*wu - dot(w, w) + d*d
+                contact = 0.5*(di + dj)
+                disc = wu*wu - dot(w, w) + contact*contact
                 if disc >= 0:
                     s = wu - math.sqrt(disc)
                     if s >= 0 and (s_first is None or s < s_first):
@@ -101,15 +108,16 @@ def merge(a, b, d, rng):
         if s_first is not None:
             moved = [(bj[0] + o[0] - s_first*u[0], bj[1] + o[1] - s_first*u[1],
                       bj[2] + o[2] - s_first*u[2]) for bj in b]
-            return centred(a + moved)
+            return centred(a + moved), da + db
 
 
-def floc(size, d, rng):
-    clusters = [[(0.0, 0.0, 0.0)] for _ in range(size)]
+def floc(diameters, rng):
+    """(centres, diameters) of a floc of spheres of these diameters."""
+    clusters = [([(0.0, 0.0, 0.0)], [di]) for di in diameters]
     while len(clusters) > 1:
-        clusters.sort(key=len)
+        clusters.sort(key=lambda c: len(c[0]))
         a, b = clusters[0], clusters[1]
-        clusters = clusters[2:] + [merge(a, b, d, rng)]
+        clusters = clusters[2:] + [merge(a, b, rng)]
     return clusters[0]
 
 def separation(a, b, box):
@@ -157,13 +165,13 @@ class Bins:
 DLCA_DIMENSION = 1.8
 
 
-def aggregate(pts, flocs, d, box, margin, rng):
+def aggregate(pts, diameters, flocs, box, margin, rng):
     """Join the clusters (lists of indices into pts, periodic in x and z)
     by diffusion-limited cluster-cluster aggregation until one is left;
     pts is changed in place.  Returns the number of moves."""
-    step = 0.25*d
-    reach = d + step          # centre distance within which a step can
-                              # bring two spheres into contact
+    step = 0.25*min(diameters)
+    reach = max(diameters) + step   # centre distance within which a step
+                                    # can bring two spheres into contact
     for k in (0, 2):
         if box[k] < 2*reach:
             raise SystemExit('makeFlocs.py: gel: the period %s = %g um is'
@@ -212,10 +220,11 @@ def aggregate(pts, flocs, d, box, margin, rng):
                     continue
                 w = separation(b, pos[j], box)
                 wu = dot(w, u)
-                disc = wu*wu - dot(w, w) + d*d
+                contact = 0.5*(diameters[i] + diameters[j])
+                disc = wu*wu - dot(w, w) + contact*contact
                 if disc >= 0:
                     s = -wu - math.sqrt(disc)
-                    if -1e-9*d <= s < s_first:
+                    if -1e-9*contact <= s < s_first:
                         s_first, partner = max(s, 0.0), j
         for i in members[c]:
             bins.remove(i, pos[i])
@@ -250,30 +259,42 @@ def rotated(points, rng):
 
 
 def main():
-    out = sys.argv[1]
-    n, d = int(sys.argv[2]), float(sys.argv[3])
-    box = [float(x) for x in sys.argv[4:7]]
-    seed, size = int(sys.argv[7]), int(sys.argv[8])
-    gelled = len(sys.argv) > 9 and sys.argv[9] == 'gel'
-    if len(sys.argv) > 10 or (len(sys.argv) == 10 and not gelled):
+    args, n_f, d_f = fines_option(sys.argv, 'makeFlocs.py')
+    out = args[1]
+    n, d = int(args[2]), float(args[3])
+    box = [float(x) for x in args[4:7]]
+    seed, size = int(args[7]), int(args[8])
+    gelled = len(args) > 9 and args[9] == 'gel'
+    if len(args) > 10 or (len(args) == 10 and not gelled):
         raise SystemExit('makeFlocs.py: unknown argument %s; usage: '
                          'makeFlocs.py out.data n diameter Lx Ly Lz seed '
-                         'floc_size [gel]' % ' '.join(sys.argv[9:]))
+                         'floc_size [gel] [--fines n_f d_f]'
+                         % ' '.join(args[9:]))
     if size < 1:
         raise SystemExit('makeFlocs.py: floc size %d: at least 1' % size)
+    if n_f and not d_f < d:
+        raise SystemExit('makeFlocs.py: --fines diameter %g um: allowed'
+                         ' below the spheres\' %g um' % (d_f, d))
     rng = random.Random(seed)
+    # the spheres' diameters in the order the flocs take them: the fines
+    # among the large spheres at random
+    diameters = [d]*n + [d_f]*n_f
+    if n_f:
+        rng.shuffle(diameters)
+    n += n_f
     margin = 0.55*d
-    gap2 = (1.05*d)**2
-    bins = Bins(box, 1.05*d)
+    bins = Bins(box, least_distance(d, d))
     pts = []
+    placed_diameters = []
 
-    def free(p):
-        return all(dot(w, w) >= gap2 for w in
-                   (separation(p, pts[j], box) for j in bins.near(p)))
+    def free(p, dp):
+        return all(dot(w, w) >= least_distance(dp, placed_diameters[j])**2
+                   for j, w in ((j, separation(p, pts[j], box))
+                                for j in bins.near(p)))
 
     sizes = [size]*(n//size) + ([n % size] if n % size else [])
     for m in sizes:
-        body = floc(m, d, rng)
+        body, body_diameters = floc(diameters[len(pts):len(pts) + m], rng)
         for tries in range(20000):
             shape = rotated(body, rng)
             lo = min(p[1] for p in shape)
@@ -286,10 +307,11 @@ def main():
                  rng.uniform(0, box[2]))
             placed = [((p[0] + c[0]) % box[0], p[1] + c[1],
                        (p[2] + c[2]) % box[2]) for p in shape]
-            if all(free(p) for p in placed):
-                for p in placed:
+            if all(free(p, dp) for p, dp in zip(placed, body_diameters)):
+                for p, dp in zip(placed, body_diameters):
                     bins.add(len(pts), p)
                     pts.append(p)
+                    placed_diameters.append(dp)
                 break
         else:
             raise SystemExit('makeFlocs.py: cannot place floc %d of %d (%d'
@@ -299,13 +321,15 @@ def main():
     if gelled:
         flocs = [list(range(k, k + m)) for k, m in
                  zip([sum(sizes[:j]) for j in range(len(sizes))], sizes)]
-        moves = aggregate(pts, flocs, d, box, margin, rng)
+        moves = aggregate(pts, placed_diameters, flocs, box, margin, rng)
         title = ('%d spheres in one network: %d flocs joined by diffusion-'
                  'limited aggregation in %d moves (makeFlocs.py)'
                  % (n, len(sizes), moves))
     else:
         title = '%d spheres in %d flocs (makeFlocs.py)' % (n, len(sizes))
-    write_data(out, pts, d, box, title)
+    if n_f:
+        title += ', %d of them fines of %g um' % (n_f, d_f)
+    write_data(out, pts, placed_diameters, box, title)
 
 if __name__ == '__main__':
     main()

@@ -8,7 +8,11 @@
 #                             flocSize spheres (makeFlocs.py), or these
 #                             joined into one network (flocculatedSuspension
 #                             gel); spheres not in one floc (not joined by
-#                             the gel) at least 5 % of a diameter apart
+#                             the gel) at least 5 % of the smaller one's
+#                             diameter apart; with fineVolumeFraction > 0
+#                             that share of the solids volume in fines of
+#                             fineDiameter (and constant/couplingProperties'
+#                             particles/diameterRange set to both sizes)
 #   log.timeStep              seed 002's critical step (eq. 12) against
 #                             the DEM step
 #
@@ -51,12 +55,22 @@ do
 done
 checkParameter $params solidsFraction 0 0.64
 checkParameter $params poissonsRatio -1 0.5
-# 0 (none) is allowed, so not checkParameter's open range
-rollingFriction=$(param rollingFriction)
-awk -v v="$rollingFriction" 'BEGIN {
-    exit !(v ~ /^[-+]?([0-9]+\.?[0-9]*|\.[0-9]+)([eE][-+]?[0-9]+)?$/ && v + 0 >= 0 && v + 0 < 1) }' \
-    || { echo "$params: keyword 'rollingFriction' is $rollingFriction;" \
-        "allowed range: 0 <= rollingFriction < 1" 1>&2; exit 1; }
+# A value from 0 (off: so not checkParameter's open range) below 1
+fromZeroBelowOne()
+{
+    local value
+    value=$(param "$1")
+    awk -v v="$value" 'BEGIN {
+        exit !(v ~ /^[-+]?([0-9]+\.?[0-9]*|\.[0-9]+)([eE][-+]?[0-9]+)?$/ && v + 0 >= 0 && v + 0 < 1) }' \
+        || { echo "$params: keyword '$1' is $value; allowed range:" \
+            "0 <= $1 < 1" 1>&2; exit 1; }
+    echo "$value"
+}
+rollingFriction=$(fromZeroBelowOne rollingFriction)
+# fines: that share of the solids volume, of a smaller size
+fineFraction=$(fromZeroBelowOne fineVolumeFraction)
+checkParameter $params fineDiameter 0 "$(param particleDiameter)"
+fineDiameter=$(param fineDiameter)
 flocculatedSuspension=$(param flocculatedSuspension)
 case "$flocculatedSuspension" in
     flocs|gel) ;;
@@ -96,9 +110,12 @@ BEGIN {
 
 # Time-step limits: seed 002 eq. 12, sqrt(m/k) with k the Hertz
 # contact's stiffness (6 E*^2 R* F)^(1/3) at the paper's mean
-# contact force F = 3.06 uN; the plugin prints its own limits
-# (surface forces, lubrication) in log.liggghts
-awk -v d="$d" -v rho="$rhop" -v E="$E" -v nu="$nu" -v dt="$dt" 'BEGIN {
+# contact force F = 3.06 uN, for the smallest spheres (two fines, with
+# fines); the plugin prints its own limits (surface forces, lubrication)
+# in log.liggghts
+dSmall=$(awk -v x="$fineFraction" -v d="$d" -v f="$fineDiameter" \
+    'BEGIN { print (x > 0 ? f : d) }')
+awk -v d="$dSmall" -v rho="$rhop" -v E="$E" -v nu="$nu" -v dt="$dt" 'BEGIN {
     pi = 3.14159265358979; m = rho*pi/6*d^3
     Es = E/(2*(1 - nu^2)); Rs = d/4; F = 3.06e-6
     k = (6*Es^2*Rs*F)^(1/3)
@@ -107,10 +124,18 @@ awk -v d="$d" -v rho="$rhop" -v E="$E" -v nu="$nu" -v dt="$dt" 'BEGIN {
         sqrt(m/k), k, dt, sqrt(m/k)/dt
 }' | tee log.timeStep
 
-# The suspension at t = 0: solids fraction of the column
-n=$(awk -v L="$width" -v H="$height" -v d="$d" -v phi="$phi" \
-    'BEGIN { printf "%d", phi*L*L*H/(3.14159265358979/6*(d*1e6)^3) + 0.5 }')
+# The suspension at t = 0: solids fraction of the column, the share
+# fineVolumeFraction of it in fines
+n=$(awk -v L="$width" -v H="$height" -v d="$d" -v phi="$phi" -v x="$fineFraction" \
+    'BEGIN { printf "%d", (1 - x)*phi*L*L*H/(3.14159265358979/6*(d*1e6)^3) + 0.5 }')
+nFine=$(awk -v L="$width" -v H="$height" -v d="$fineDiameter" -v phi="$phi" -v x="$fineFraction" \
+    'BEGIN { printf "%d", x*phi*L*L*H/(3.14159265358979/6*(d*1e6)^3) + 0.5 }')
 diameter=$(awk -v d="$d" 'BEGIN { print d*1e6 }')
+fines=()
+if [ "$nFine" -gt 0 ]
+then
+    fines=(--fines "$nFine" "$(awk -v d="$fineDiameter" 'BEGIN { print d*1e6 }')")
+fi
 # A suspension that cannot be made (no room for a floc, no gel) leaves
 # neither it, the DEM's values nor log.timeStep behind
 trap 'rm -f DEM/filtration.liggghts DEM/suspension.data log.timeStep' ERR
@@ -122,12 +147,18 @@ then
     gel=
     [ "$flocculatedSuspension" = gel ] && gel=gel
     python3 "$tutorial"/makeFlocs.py DEM/suspension.data "$n" "$diameter" \
-        "$width" "$height" "$width" 2718 "$(param flocSize)" $gel
+        "$width" "$height" "$width" 2718 "$(param flocSize)" $gel "${fines[@]}"
 else
     python3 "${COLLOIDFOAM_TUTORIALS:-$tutorial/..}"/twoWay/makeSuspension.py \
         DEM/suspension.data \
-        "$n" "$diameter" "$width" "$height" "$width" 2718 column
+        "$n" "$diameter" "$width" "$height" "$width" 2718 column "${fines[@]}"
 fi
 trap - ERR
-echo "$n particles at solids fraction $phi in $width x $height x $width um"
+# the coupling's start-up checks for both sizes
+if [ "$nFine" -gt 0 ]
+then
+    foamDictionary constant/couplingProperties -entry particles/diameterRange \
+        -add "($fineDiameter $d)" > /dev/null
+fi
+echo "$n particles${fines:+ and $nFine fines of $fineDiameter m} at solids fraction $phi in $width x $height x $width um"
 

@@ -32,20 +32,27 @@ def read(path):
                      for r in rows if r.strip()])
 
 
-def separations(p):
+def separations(p, box=BOX):
+    """Centre distances of the spheres at p, x and z periodic (box)."""
     w = p[:, None, :] - p[None, :, :]
     for k in (0, 2):
-        w[:, :, k] -= BOX[k]*np.round(w[:, :, k]/BOX[k])
+        w[:, :, k] -= box[k]*np.round(w[:, :, k]/box[k])
     r = np.sqrt((w**2).sum(-1))
     np.fill_diagonal(r, np.inf)
     return r
 
 
 def clusters(r):
-    touching = r < D*(1 + 1e-7)
-    label = -np.ones(len(r), int)
+    count, label, contacts = components(r < D*(1 + 1e-7))
+    return count, np.bincount(label).max(), contacts
+
+
+def components(touching):
+    """(count, label of each sphere, contacts) of the clusters of the
+    matrix touching."""
+    label = -np.ones(len(touching), int)
     count = 0
-    for s in range(len(r)):
+    for s in range(len(touching)):
         if label[s] >= 0:
             continue
         label[s] = count
@@ -56,7 +63,7 @@ def clusters(r):
                 label[j] = count
                 stack.append(j)
         count += 1
-    return count, np.bincount(label).max(), int(touching.sum())//2
+    return count, label, int(touching.sum())//2
 
 
 def main():
