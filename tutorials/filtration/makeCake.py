@@ -27,8 +27,9 @@ def main():
     # each sphere's diameter as set (particleDiameter, or fineDiameter
     # for the fines): not the cloud's written digits
     params = os.path.join(run, 'system', 'filtrationParameters')
-    sizes = [eval_entry(params, key)*um
-             for key in ('particleDiameter', 'fineDiameter')]
+    sizes = [eval_entry(params, 'particleDiameter')*um]
+    if 'fineDiameter' in open(params).read():    # not in older runs
+        sizes.append(eval_entry(params, 'fineDiameter')*um)
     d = [min(sizes, key=lambda s: abs(s - 2*r*um)) for r in rad]
     top = max((p[1] + r)*um for p, r in zip(pos, rad))
     piston = top + 0.05

@@ -120,8 +120,8 @@ awk -v d="$dSmall" -v rho="$rhop" -v E="$E" -v nu="$nu" -v dt="$dt" 'BEGIN {
     Es = E/(2*(1 - nu^2)); Rs = d/4; F = 3.06e-6
     k = (6*Es^2*Rs*F)^(1/3)
     printf "Critical step (seed 002 eq. 12) sqrt(m/k) = %.3g s " \
-        "(k = %.3g N/m at 3.06 uN); DEM step %g s = 1/%.0f of it\n", \
-        sqrt(m/k), k, dt, sqrt(m/k)/dt
+        "(spheres of %g m, k = %.3g N/m at 3.06 uN); DEM step %g s = 1/%.0f of it\n", \
+        sqrt(m/k), d, k, dt, sqrt(m/k)/dt
 }' | tee log.timeStep
 
 # The suspension at t = 0: solids fraction of the column, the share
@@ -130,11 +130,11 @@ n=$(awk -v L="$width" -v H="$height" -v d="$d" -v phi="$phi" -v x="$fineFraction
     'BEGIN { printf "%d", (1 - x)*phi*L*L*H/(3.14159265358979/6*(d*1e6)^3) + 0.5 }')
 nFine=$(awk -v L="$width" -v H="$height" -v d="$fineDiameter" -v phi="$phi" -v x="$fineFraction" \
     'BEGIN { printf "%d", x*phi*L*L*H/(3.14159265358979/6*(d*1e6)^3) + 0.5 }')
-diameter=$(awk -v d="$d" 'BEGIN { print d*1e6 }')
+diameter=$(awk -v d="$d" 'BEGIN { printf "%.10g", d*1e6 }')
 fines=()
 if [ "$nFine" -gt 0 ]
 then
-    fines=(--fines "$nFine" "$(awk -v d="$fineDiameter" 'BEGIN { print d*1e6 }')")
+    fines=(--fines "$nFine" "$(awk -v d="$fineDiameter" 'BEGIN { printf "%.10g", d*1e6 }')")
 fi
 # A suspension that cannot be made (no room for a floc, no gel) leaves
 # neither it, the DEM's values nor log.timeStep behind
@@ -154,11 +154,14 @@ else
         "$n" "$diameter" "$width" "$height" "$width" 2718 column "${fines[@]}"
 fi
 trap - ERR
-# the coupling's start-up checks for both sizes
+# the coupling's start-up checks for both sizes (a folder prepared again
+# without fines keeps no range); the file keeps its #include and macros
+foamDictionary -disableFunctionEntries constant/couplingProperties \
+    -entry particles/diameterRange -remove > /dev/null 2>&1 || true
 if [ "$nFine" -gt 0 ]
 then
-    foamDictionary constant/couplingProperties -entry particles/diameterRange \
-        -add "($fineDiameter $d)" > /dev/null
+    foamDictionary -disableFunctionEntries constant/couplingProperties \
+        -entry particles/diameterRange -add "($fineDiameter $d)" > /dev/null
 fi
 echo "$n particles${fines:+ and $nFine fines of $fineDiameter m} at solids fraction $phi in $width x $height x $width um"
 

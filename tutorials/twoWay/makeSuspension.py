@@ -30,7 +30,7 @@ def write_data(out, pts, d, box, title):
         f.write('\nAtoms\n\n')
         for i, (p, di) in enumerate(zip(pts, diameters)):
             # id type diameter density x y z
-            f.write('%d 1 %g 2.5 %.9f %.9f %.9f\n' % (i + 1, di, p[0], p[1], p[2]))
+            f.write('%d 1 %.10g 2.5 %.9f %.9f %.9f\n' % (i + 1, di, p[0], p[1], p[2]))
 
 
 def least_distance(a, b):

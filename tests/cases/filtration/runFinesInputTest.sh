@@ -7,8 +7,9 @@
 # size with fineVolumeFraction 0.487, both variants: the suspension holds
 # the spheres of each size that the solids fraction and the share ask for
 # (counted here from the case's sizes), and constant/couplingProperties
-# particles/diameterRange (2.9e-06 5.8e-06); with 0, spheres of one size
-# and no diameterRange.  (The suspensions themselves:
+# particles/diameterRange (2.9e-06 5.8e-06), the file still reading its
+# values from filtrationParameters (#include kept); with 0 then, in the
+# same folder, spheres of one size and no diameterRange.  (The suspensions themselves:
 # filtration.finesSuspension.)
 #
 # usage: runFinesInputTest.sh workDir
@@ -33,7 +34,6 @@ for run in "0.487 stable" "0.487 flocculated" "0 stable"
 do
     set -- $run
     rm -rf DEM
-    cp "$COLLOIDFOAM_TUTORIALS/filtration/constant/couplingProperties" constant/
     sed -i -e "s/^fineVolumeFraction .*/fineVolumeFraction $1;/" \
         -e "s/^variant .*/variant $2;/" $params
     cp $params system/filtrationParameters.set
@@ -58,6 +58,8 @@ print('%d %d' % (round((1 - x)*v/(math.pi/6*5.8**3)), round(x*v/(math.pi/6*2.9**
     else
         [ "$range" = "(2.9e-06 5.8e-06)" ] \
             || fail "fineVolumeFraction $1: diameterRange '$range' (expected (2.9e-06 5.8e-06))"
+        grep -q '^#include "$FOAM_CASE/system/filtrationParameters"' constant/couplingProperties \
+            || fail "fineVolumeFraction $1: constant/couplingProperties lost its #include"
     fi
     echo "fineVolumeFraction $1, $2: spheres of 5.8 and 2.9 um $got (expected $expected), diameterRange '${range}'"
     cp system/filtrationParameters.set $params
