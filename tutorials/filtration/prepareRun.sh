@@ -154,14 +154,17 @@ else
         "$n" "$diameter" "$width" "$height" "$width" 2718 column "${fines[@]}"
 fi
 trap - ERR
-# the coupling's start-up checks for both sizes (a folder prepared again
-# without fines keeps no range); the file keeps its #include and macros
-foamDictionary -disableFunctionEntries constant/couplingProperties \
-    -entry particles/diameterRange -remove > /dev/null 2>&1 || true
+# the coupling's start-up checks for both sizes: a line of the particles
+# dictionary, after its density (a folder prepared again without fines
+# keeps no range); the file keeps its #include, macros and comments
+sed -i '/^    diameterRange /d' constant/couplingProperties
 if [ "$nFine" -gt 0 ]
 then
-    foamDictionary -disableFunctionEntries constant/couplingProperties \
-        -entry particles/diameterRange -add "($fineDiameter $d)" > /dev/null
+    sed -i "/^particles/,/^}/ s|^\(    density .*\)\$|\1\n    diameterRange   ($fineDiameter $d); // [m] prepareRun.sh: fines|" \
+        constant/couplingProperties
+    grep -q "^    diameterRange   ($fineDiameter $d);" constant/couplingProperties \
+        || { echo "$0: could not set particles/diameterRange in" \
+                  "constant/couplingProperties (no 'density' line in 'particles')" 1>&2; exit 1; }
 fi
 echo "$n particles${fines:+ and $nFine fines of $fineDiameter m} at solids fraction $phi in $width x $height x $width um"
 

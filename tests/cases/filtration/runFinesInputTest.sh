@@ -8,7 +8,8 @@
 # the spheres of each size that the solids fraction and the share ask for
 # (counted here from the case's sizes), and constant/couplingProperties
 # particles/diameterRange (2.9e-06 5.8e-06), the file still reading its
-# values from filtrationParameters (#include kept); with 0 then, in the
+# values from filtrationParameters (#include kept) and keeping its
+# comments; with 0 then, in the
 # same folder, spheres of one size and no diameterRange.  (The suspensions themselves:
 # filtration.finesSuspension.)
 #
@@ -60,6 +61,8 @@ print('%d %d' % (round((1 - x)*v/(math.pi/6*5.8**3)), round(x*v/(math.pi/6*2.9**
             || fail "fineVolumeFraction $1: diameterRange '$range' (expected (2.9e-06 5.8e-06))"
         grep -q '^#include "$FOAM_CASE/system/filtrationParameters"' constant/couplingProperties \
             || fail "fineVolumeFraction $1: constant/couplingProperties lost its #include"
+        grep -q '^// Stokes relaxation time' constant/couplingProperties \
+            || fail "fineVolumeFraction $1: constant/couplingProperties lost its comments"
     fi
     echo "fineVolumeFraction $1, $2: spheres of 5.8 and 2.9 um $got (expected $expected), diameterRange '${range}'"
     cp system/filtrationParameters.set $params
