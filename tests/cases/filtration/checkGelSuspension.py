@@ -66,6 +66,17 @@ def components(touching):
     return count, label, int(touching.sum())//2
 
 
+def refused(command, work, args, words):
+    """(whether command, writing work/bad.data with args, exits non-zero,
+    says every one of words and writes no file; what it said)."""
+    bad = os.path.join(work, 'bad.data')
+    run = subprocess.run(command + [bad] + args, capture_output=True,
+                         text=True)
+    said = run.stderr.strip()
+    return (run.returncode != 0 and all(w in said for w in words)
+            and not os.path.exists(bad)), said
+
+
 def main():
     script, work = sys.argv[1], sys.argv[2]
     os.makedirs(work, exist_ok=True)
@@ -112,14 +123,11 @@ def main():
     check(worst <= 1e-6*D, 'gel: flocs moved rigidly (largest change of an '
           'internal distance %.2e d)' % (worst/D))
 
-    bad = os.path.join(work, 'bad.data')
-    run = subprocess.run([sys.executable, script, bad, str(N), str(D)] +
-                         [str(x) for x in BOX] + ['2718', str(SIZE), 'gell'],
-                         capture_output=True, text=True)
-    check(run.returncode != 0 and 'gell' in run.stderr
-          and 'usage' in run.stderr and not os.path.exists(bad),
-          'bad argument: non-zero exit (%d), named with the usage (%s), '
-          'no file' % (run.returncode, run.stderr.strip()))
+    ok, said = refused([sys.executable, script], work,
+                       [str(N), str(D)] + [str(x) for x in BOX]
+                       + ['2718', str(SIZE), 'gell'], ['gell', 'usage'])
+    check(ok, 'bad argument: non-zero exit, named with the usage (%s), no'
+          ' file' % said)
 
     if failures:
         sys.exit('%d failures' % len(failures))
