@@ -187,6 +187,14 @@ add_filtration_check(compare "filtration comparison: all checks passed"
     /usr/bin/python3 ${filtrationDir}/checkCompare.py
     ${CMAKE_SOURCE_DIR}/tutorials/filtration)
 
+# filtration.cakeFraction: the cake fraction that ends the filtration
+#   (filtrationResults.cake_fraction) is the solids volume's share below
+#   the cake's top, not the particles' count, on hand-built arrangements
+#   of 5.8 and 2.9 um spheres (checkCakeFraction.py)
+add_filtration_check(cakeFraction "cake fraction: all checks passed"
+    /usr/bin/python3 ${filtrationDir}/checkCakeFraction.py
+    ${CMAKE_SOURCE_DIR}/tutorials/filtration)
+
 # consolidationResults.py without a DEM run (checkConsolidation<check>.py):
 #   Incomplete: a consolidation that stopped after 2 of its 5 pressures
 #     exits non-zero, names DEM/consolidation.dat, the count and

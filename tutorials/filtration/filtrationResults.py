@@ -16,7 +16,8 @@ Definitions (SI):
   cake 0.35 to 0.6); the cake's particles are those below H_c + d (its
   rough top included).  (Not by velocity: the cake's contacts ring at up
   to 1 m/s while loaded.)  The filtration ends (t_f, V_f) at the first
-  write with 99 % in the cake.
+  write with 99 % of the solids' volume in the cake (by volume: with
+  fines, a count would be the fines').
 - cake porosity: 1 - (particle volume below H_c - d)/(A (H_c - d)), each
   sphere cut exactly by the plane: the rough top diameter left out.
 - Ruth's law t/V = a V + b: a = mu alpha c/(2 A^2 dp), b = mu R_m/(A dp);
@@ -117,6 +118,15 @@ def cap_volume(r, h):
     return math.pi*h*h*(3*r - h)/3
 
 
+def cake_fraction(ys, radii, top):
+    """Fraction of the solids' volume whose sphere centres lie below top
+    (heights and radii in one unit): by volume, not by count, so that
+    fines (eight 2.9 um spheres to one 5.8 um sphere's volume) do not
+    decide alone when the suspension is gone."""
+    total = sum(r**3 for r in radii)
+    return sum(r**3 for y, r in zip(ys, radii) if y < top)/total
+
+
 def main():
     run = sys.argv[1]
     params = os.path.join(run, 'system', 'filtrationParameters')
@@ -153,7 +163,8 @@ def main():
     # diameter (spheres cut exactly); the cake is the dense layer on the
     # medium, its top H_c where the profile first falls through SOLIDS_CUT
     # going up (between the suspension's and a cake's); a particle belongs
-    # to the cake when its centre is below H_c + d
+    # to the cake when its centre is below H_c + d; the cake fraction is
+    # by volume
     snaps = [read_particles(path) for path in particleCloud.write_times(run)]
     n_particles = len(snaps[0][1])
     below = 0
@@ -176,7 +187,7 @@ def main():
                 w = (solids[k] - SOLIDS_CUT)/(solids[k] - solids[k + 1])
                 h_c = (k + 0.5 + w)*d
                 break
-        in_cake = sum(1 for y in ys if y < h_c + d)/len(ys)
+        in_cake = cake_fraction(ys, rad, h_c + d)
         h_in = h_c - d
         eps_c = float('nan')
         if h_in > d:
@@ -200,7 +211,7 @@ def main():
             2.0*len(forces)/n_particles,
             1e-9*sum(forces)/len(forces) if forces else 0.0)   # nN -> N
 
-    # End of filtration: when 99 % of the particles are in the cake,
+    # End of filtration: when 99 % of the solids are in the cake,
     # linear in the cake fraction between the writes around it (the
     # particles arrive at a nearly steady rate until the last: the
     # filtrate's rate is steady), not the write interval's 50 us steps
