@@ -187,12 +187,13 @@ add_filtration_check(compare "filtration comparison: all checks passed"
     /usr/bin/python3 ${filtrationDir}/checkCompare.py
     ${CMAKE_SOURCE_DIR}/tutorials/filtration)
 
-# filtration.cakeFraction: the cake fraction that ends the filtration
-#   (filtrationResults.cake_fraction) is the solids volume's share below
-#   the cake's top, not the particles' count, on hand-built arrangements
-#   of 5.8 and 2.9 um spheres (checkCakeFraction.py)
-add_filtration_check(cakeFraction "cake fraction: all checks passed"
-    /usr/bin/python3 ${filtrationDir}/checkCakeFraction.py
+# filtration.resultsDefinitions: filtrationResults.py's cake fraction,
+#   which ends the filtration, is the solids volume's share below the
+#   cake's top, not the particles' count (hand-built arrangements of 5.8
+#   and 2.9 um spheres); a run ending between two contact dumps reports
+#   the contacts of the last one (checkResultsDefinitions.py)
+add_filtration_check(resultsDefinitions "results definitions: all checks passed"
+    /usr/bin/python3 ${filtrationDir}/checkResultsDefinitions.py
     ${CMAKE_SOURCE_DIR}/tutorials/filtration)
 
 # consolidationResults.py without a DEM run (checkConsolidation<check>.py):

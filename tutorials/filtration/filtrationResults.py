@@ -28,7 +28,8 @@ Definitions (SI):
   drop mu R_FM q (the suspension is all in the cake by then).
 - contacts: pairs that overlap (DEM/contacts: pairs within the surface
   forces' range are listed too); coordination number 2 N_c/N; mean
-  contact force |F| over those pairs (the whole pair force).
+  contact force |F| over those pairs (the whole pair force); results.txt
+  gives them at the latest contact dump of the run (contacts_time_s).
 
 usage: filtrationResults.py <run folder>
 """
@@ -125,6 +126,17 @@ def cake_fraction(ys, radii, top):
     decide alone when the suspension is gone."""
     total = sum(r**3 for r in radii)
     return sum(r**3 for y, r in zip(ys, radii) if y < top)/total
+
+
+def latest_contacts(contacts, t_end):
+    """(time, value) of the latest contact dump at or before t_end: the
+    DEM dumps its contacts at the write interval, and an end time between
+    two writes (-endTime) is written by the fluid only.  (nan, (nan, nan))
+    without a dump."""
+    times = [t for t in contacts if t <= t_end*(1 + 1e-9)]
+    if not times:
+        return float('nan'), (float('nan'),)*2
+    return max(times), contacts[max(times)]
 
 
 def main():
@@ -249,7 +261,7 @@ def main():
     dp_cake = dp - mu*r_fm*q_end
     k_perm = mu*q_end*h_end/dp_cake if dp_cake > 0 else float('nan')
     eps_end = series[-1][3]
-    z_end, f_end = contacts.get(round(t_end, 12), (float('nan'),)*2)
+    t_contacts, (z_end, f_end) = latest_contacts(contacts, t_end)
     eps_low = lowest[-1][1]
 
     with open(os.path.join(run, 'filtration.csv'), 'w') as f:
@@ -283,6 +295,7 @@ def main():
         ('lowest_layer_porosity', '%.4f' % eps_low),
         ('permeability_m2', '%.4g' % k_perm),
         ('cake_pressure_drop_Pa', '%.5g' % dp_cake),
+        ('contacts_time_s', '%.5g' % t_contacts),
         ('coordination_number', '%.3f' % z_end),
         ('mean_contact_force_N', '%.4g' % f_end),
     ]

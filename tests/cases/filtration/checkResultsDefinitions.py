@@ -1,7 +1,9 @@
-"""The cake fraction that decides the end of filtration
-(filtrationResults.cake_fraction: the share of the solids volume whose
-centres lie below the cake's top plus one diameter), on hand-built
-arrangements whose volume shares are known in closed form:
+"""Two definitions of filtrationResults.py, on hand-built inputs.
+
+The cake fraction that decides the end of filtration (cake_fraction: the
+share of the solids volume whose centres lie below the cake's top plus
+one diameter), on arrangements whose volume shares are known in closed
+form:
 
 - one size, 97 of 100 spheres below the top: 0.97 (count and volume the
   same);
@@ -15,7 +17,14 @@ arrangements whose volume shares are known in closed form:
   against the volume share summed here from (4/3) pi r^3;
 each within 1e-12.
 
-usage: checkCakeFraction.py tutorials/filtration workDir
+The run's contacts (latest_contacts): the DEM dumps its contacts every
+write interval; a run whose end time lies between two writes (-endTime
+0.4 ms with writes every 24 us) reports those of the last dump before
+it, not none; an end time that is a dump's, read back from a time
+folder's name to fewer digits, reports that dump's; no dump before the
+end, none.
+
+usage: checkResultsDefinitions.py tutorials/filtration workDir
 """
 import math
 import os
@@ -25,7 +34,7 @@ import sys
 TOL = 1e-12
 
 sys.path.insert(0, os.path.abspath(sys.argv[1]))
-from filtrationResults import cake_fraction  # noqa: E402
+from filtrationResults import cake_fraction, latest_contacts  # noqa: E402
 
 failed = []
 
@@ -58,7 +67,22 @@ below = sum(v for y, v in zip(ys, volume) if y < TOP)
 check('random mixture of 200', cake_fraction(ys, radii, TOP),
       below/sum(volume))
 
+# Dumps every 24 us (times as the results key them: step x DEM step,
+# rounded to 12 digits), each (coordination number, mean force [N])
+dumps = {round(k*120000*2e-10, 12): (5.0 + 0.01*k, 1e-8*k) for k in range(17)}
+t, value = latest_contacts(dumps, 0.000400001)
+check('end between two dumps: the last one before, time', t, 0.000384)
+check('end between two dumps: the last one before, coordination',
+      value[0], 5.16)
+t, value = latest_contacts(dumps, 0.000384)
+check('end at a dump: that dump', t, 0.000384)
+t, value = latest_contacts(dumps, 2.4e-5*(1 - 1e-11))
+check('end at a dump, its time read to fewer digits', t, 2.4e-5)
+t, value = latest_contacts({1e-4: (5.0, 1e-8)}, 5e-5)
+check('no dump before the end: none (nan is not nan)',
+      float(t == t), 0.0)
+
 if failed:
-    print('cake fraction: %d checks FAILED' % len(failed))
+    print('results definitions: %d checks FAILED' % len(failed))
     sys.exit(1)
-print('cake fraction: all checks passed')
+print('results definitions: all checks passed')
