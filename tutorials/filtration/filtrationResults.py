@@ -17,7 +17,9 @@ Definitions (SI):
   rough top included).  (Not by velocity: the cake's contacts ring at up
   to 1 m/s while loaded.)  The filtration ends (t_f, V_f) at the first
   write with 99 % of the solids' volume in the cake (by volume: with
-  fines, a count would be the fines').
+  fines, a count would be the fines'), or, where an open cake's rough
+  top keeps more than 1 % above the cut, when the cake stops growing
+  (end_of_filtration).
 - cake porosity: 1 - (particle volume below H_c - d)/(A (H_c - d)), each
   sphere cut exactly by the plane: the rough top diameter left out.
 - Ruth's law t/V = a V + b: a = mu alpha c/(2 A^2 dp), b = mu R_m/(A dp);
@@ -139,6 +141,29 @@ def latest_contacts(contacts, t_end):
     return max(times), contacts[max(times)]
 
 
+def end_of_filtration(series, still):
+    """(t_f, how) from the cake fraction at each write, series = [(time,
+    fraction), ...]: 'yes' at 99 % of the solids in the cake, linear in
+    the fraction between the writes around it (the particles arrive at a
+    nearly steady rate until the last: the filtrate's rate is steady),
+    not the write interval's steps; 'stopped' at the first write from
+    which the fraction, above 0.9, changes by less than still over a
+    write interval (the cake has stopped growing below 99 %: the last
+    flocs stand on the rough top of an open cake, above the cut; t_f
+    then lies up to one write interval before the write); 'no' (t_f the
+    last write) when neither happened."""
+    for k, (t, c) in enumerate(series):
+        if c >= 0.99:
+            if k == 0:
+                return t, 'yes'
+            t0, c0 = series[k - 1]
+            return t0 + (0.99 - c0)/(c - c0)*(t - t0), 'yes'
+        if k + 1 < len(series) and c > 0.9 \
+                and abs(series[k + 1][1] - c) < still:
+            return t, 'stopped'
+    return series[-1][0], 'no'
+
+
 def main():
     run = sys.argv[1]
     params = os.path.join(run, 'system', 'filtrationParameters')
@@ -223,19 +248,13 @@ def main():
             2.0*len(forces)/n_particles,
             1e-9*sum(forces)/len(forces) if forces else 0.0)   # nN -> N
 
-    # End of filtration: when 99 % of the solids are in the cake,
-    # linear in the cake fraction between the writes around it (the
-    # particles arrive at a nearly steady rate until the last: the
-    # filtrate's rate is steady), not the write interval's 50 us steps
-    k_f = next((k for k, s in enumerate(series) if s[1] >= 0.99), None)
-    finished = k_f is not None
-    if not finished:
-        t_f = series[-1][0]
-    elif k_f == 0:
-        t_f = series[0][0]
-    else:
-        (t0, c0), (t1, c1) = series[k_f - 1][:2], series[k_f][:2]
-        t_f = t0 + (0.99 - c0)/(c1 - c0)*(t1 - t0)
+    # End of filtration (end_of_filtration): the smallest sphere's share
+    # of the solids volume, below which a change of the cake fraction
+    # means no particle joined the cake
+    smallest = min(snaps[0][3])
+    share = smallest**3/sum(r**3 for r in snaps[0][3])
+    t_f, ending = end_of_filtration([s[:2] for s in series], 0.5*share)
+    finished = ending != 'no'
     v_f = at(t_f, t_q, vol)
 
     # Ruth's t/V = a V + b from 0.1 V_f to V_f
@@ -281,6 +300,7 @@ def main():
         ('particles', n_particles),
         ('particles_below_medium', below),
         ('filtration_finished', 'yes' if finished else 'no'),
+        ('filtration_end', ending),
         ('filtration_time_s', '%.5g' % t_f),
         ('filtrate_volume_m3', '%.5g' % v_f),
         ('ruth_slope_s_m6', '%.5g' % a),

@@ -1,4 +1,4 @@
-"""Two definitions of filtrationResults.py, on hand-built inputs.
+"""Three definitions of filtrationResults.py, on hand-built inputs.
 
 The cake fraction that decides the end of filtration (cake_fraction: the
 share of the solids volume whose centres lie below the cake's top plus
@@ -24,6 +24,15 @@ it, not none; an end time that is a dump's, read back from a time
 folder's name to fewer digits, reports that dump's; no dump before the
 end, none.
 
+The end of filtration (end_of_filtration) from the cake fraction at each
+write: crossing 99 % between writes at 0.98 and 0.995, at the linear
+interpolation (two thirds into the interval); a cake that stops growing at
+0.9899 (the 0.168 ms write of a flocculated titanium dioxide run, 'no'
+before this rule), 'stopped' at the first write of the still fraction;
+still below 0.9 (the start, before the cake forms), not an end; a
+fraction that changes by one small sphere's share between writes, not
+an end; still rising at the last write, 'no' at the last write.
+
 usage: checkResultsDefinitions.py tutorials/filtration workDir
 """
 import math
@@ -34,7 +43,8 @@ import sys
 TOL = 1e-12
 
 sys.path.insert(0, os.path.abspath(sys.argv[1]))
-from filtrationResults import cake_fraction, latest_contacts  # noqa: E402
+from filtrationResults import (cake_fraction, end_of_filtration,  # noqa: E402
+                               latest_contacts)
 
 failed = []
 
@@ -81,6 +91,24 @@ check('end at a dump, its time read to fewer digits', t, 2.4e-5)
 t, value = latest_contacts({1e-4: (5.0, 1e-8)}, 5e-5)
 check('no dump before the end: none (nan is not nan)',
       float(t == t), 0.0)
+
+# The end of filtration; still: half of one sphere's share of 795
+STILL = 0.5/795
+writes = [0.0, 2.4e-5, 4.8e-5, 7.2e-5]
+t, how = end_of_filtration(list(zip(writes, [0.3, 0.7, 0.98, 0.995])), STILL)
+check('99 % crossed between writes: t_f', t, 4.8e-5 + 2.4e-5/1.5)
+check('99 % crossed between writes: yes', float(how == 'yes'), 1.0)
+fractions = [0.9069, 0.9836, 0.9899, 0.9899, 0.9899]
+t, how = end_of_filtration(list(zip([1.2e-4, 1.44e-4, 1.68e-4, 1.92e-4,
+                                     2.16e-4], fractions)), STILL)
+check('cake stopped at 0.9899: t_f, its first write', t, 1.68e-4)
+check('cake stopped at 0.9899: stopped', float(how == 'stopped'), 1.0)
+t, how = end_of_filtration(list(zip(writes, [0.02, 0.02, 0.5, 0.8])), STILL)
+check('still at the start: not an end', float(how == 'no'), 1.0)
+t, how = end_of_filtration(list(zip(writes, [0.95, 0.95 + 1.0/795,
+                                             0.95 + 2.0/795, 0.96])), STILL)
+check('one sphere a write: not an end', float(how == 'no'), 1.0)
+check('still rising at the end: t_f the last write', t, 7.2e-5)
 
 if failed:
     print('results definitions: %d checks FAILED' % len(failed))
