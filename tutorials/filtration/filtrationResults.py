@@ -18,8 +18,8 @@ Definitions (SI):
   to 1 m/s while loaded.)  The filtration ends (t_f, V_f) at the first
   write with 99 % of the solids' volume in the cake (by volume: with
   fines, a count would be the fines'), or, where an open cake's rough
-  top keeps more than 1 % above the cut, when the cake stops growing
-  (end_of_filtration).
+  top keeps more than 1 % of the solids above the cut, when the cake
+  stops growing (end_of_filtration).
 - cake porosity: 1 - (particle volume below H_c - d)/(A (H_c - d)), each
   sphere cut exactly by the plane: the rough top diameter left out.
 - Ruth's law t/V = a V + b: a = mu alpha c/(2 A^2 dp), b = mu R_m/(A dp);
@@ -147,19 +147,21 @@ def end_of_filtration(series, still):
     the fraction between the writes around it (the particles arrive at a
     nearly steady rate until the last: the filtrate's rate is steady),
     not the write interval's steps; 'stopped' at the first write from
-    which the fraction, above 0.9, changes by less than still over a
-    write interval (the cake has stopped growing below 99 %: the last
-    flocs stand on the rough top of an open cake, above the cut; t_f
-    then lies up to one write interval before the write); 'no' (t_f the
-    last write) when neither happened."""
+    which the fraction, above 0.9, changes by less than still over each
+    of the next two write intervals (the cake has stopped growing below
+    99 %: the last flocs stand on the rough top of an open cake, above
+    the cut; two, so that a pause between arriving flocs is not taken
+    for the end; t_f then lies up to one write interval before the
+    write, at the whole fraction the cake reaches, where 'yes' is at
+    99 %); 'no' (t_f the last write) when neither happened."""
     for k, (t, c) in enumerate(series):
         if c >= 0.99:
             if k == 0:
                 return t, 'yes'
             t0, c0 = series[k - 1]
             return t0 + (0.99 - c0)/(c - c0)*(t - t0), 'yes'
-        if k + 1 < len(series) and c > 0.9 \
-                and abs(series[k + 1][1] - c) < still:
+        if k + 2 < len(series) and c > 0.9 \
+                and all(abs(series[j][1] - c) < still for j in (k + 1, k + 2)):
             return t, 'stopped'
     return series[-1][0], 'no'
 

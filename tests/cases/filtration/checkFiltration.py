@@ -1,7 +1,8 @@
 """Checks of one filtration run (tutorials/filtration, filtrationResults.py
 already run on it):
 - the filtrate volume grows at every fluid step (flow rate > 0 through the
-  outlet), and the filtration ended (99 % of the particles in the cake);
+  outlet), and the filtration ended (99 % of the solids volume in the
+  cake: filtration_end yes, not a cake that stopped growing below it);
 - with --ruth: t/V against V is a straight line from 10 % of the filtrate
   to the end of filtration (Ruth): R^2 >= 0.98 (always printed);
 - no particle passed the filter medium (none below y = 0 at any write);
@@ -62,8 +63,8 @@ def main():
     growing = min(flux) > 0
     print('filtrate flow rate: %d steps, smallest %.4g m^3/s (must be > 0)'
           % (len(flux), min(flux)))
-    finished = r['filtration_finished'] == 'yes'
-    print('filtration ended: %s at %s s' % (r['filtration_finished'],
+    finished = r['filtration_end'] == 'yes'
+    print('filtration ended: %s at %s s' % (r['filtration_end'],
                                            r['filtration_time_s']))
     r2 = float(r['ruth_r2'])
     print('t/V against V: R^2 %.5f over %s points (at least %.2f)'

@@ -29,9 +29,12 @@ write: crossing 99 % between writes at 0.98 and 0.995, at the linear
 interpolation (two thirds into the interval); a cake that stops growing at
 0.9899 (the 0.168 ms write of a flocculated titanium dioxide run, 'no'
 before this rule), 'stopped' at the first write of the still fraction;
-still below 0.9 (the start, before the cake forms), not an end; a
-fraction that changes by one small sphere's share between writes, not
-an end; still rising at the last write, 'no' at the last write.
+a pause of one write interval between arriving flocs, not an end (the
+cake then reaches 99 %: 'yes' there); still below 0.9 (the start,
+before the cake forms), not an end; a fraction that changes by one
+small sphere's share between writes, not an end; still rising at the
+last write, 'no' at the last write; a single write already at 99 %,
+'yes' at it.
 
 usage: checkResultsDefinitions.py tutorials/filtration workDir
 """
@@ -103,12 +106,18 @@ t, how = end_of_filtration(list(zip([1.2e-4, 1.44e-4, 1.68e-4, 1.92e-4,
                                      2.16e-4], fractions)), STILL)
 check('cake stopped at 0.9899: t_f, its first write', t, 1.68e-4)
 check('cake stopped at 0.9899: stopped', float(how == 'stopped'), 1.0)
-t, how = end_of_filtration(list(zip(writes, [0.02, 0.02, 0.5, 0.8])), STILL)
+t, how = end_of_filtration(list(zip(writes, [0.95, 0.95, 0.97, 0.995])),
+                           STILL)
+check('a pause of one interval: yes at 99 %', t, 4.8e-5 + 2.4e-5*0.8)
+t, how = end_of_filtration(list(zip(writes, [0.02, 0.02, 0.02, 0.8])), STILL)
 check('still at the start: not an end', float(how == 'no'), 1.0)
 t, how = end_of_filtration(list(zip(writes, [0.95, 0.95 + 1.0/795,
                                              0.95 + 2.0/795, 0.96])), STILL)
 check('one sphere a write: not an end', float(how == 'no'), 1.0)
 check('still rising at the end: t_f the last write', t, 7.2e-5)
+t, how = end_of_filtration([(1e-4, 0.995)], STILL)
+check('a single write at 99 %: t_f', t, 1e-4)
+check('a single write at 99 %: yes', float(how == 'yes'), 1.0)
 
 if failed:
     print('results definitions: %d checks FAILED' % len(failed))
