@@ -191,7 +191,9 @@ add_filtration_check(compare "filtration comparison: all checks passed"
 #   which ends the filtration, is the solids volume's share below the
 #   cake's top, not the particles' count (hand-built arrangements of 5.8
 #   and 2.9 um spheres); a run ending between two contact dumps reports
-#   the contacts of the last one (checkResultsDefinitions.py)
+#   the contacts of the last one; the filtration ends at 99 %, or where
+#   the cake has stopped growing over two writes, not at a pause
+#   (checkResultsDefinitions.py)
 add_filtration_check(resultsDefinitions "results definitions: all checks passed"
     /usr/bin/python3 ${filtrationDir}/checkResultsDefinitions.py
     ${CMAKE_SOURCE_DIR}/tutorials/filtration)

@@ -99,7 +99,7 @@ check('no dump before the end: none (nan is not nan)',
 STILL = 0.5/795
 writes = [0.0, 2.4e-5, 4.8e-5, 7.2e-5]
 t, how = end_of_filtration(list(zip(writes, [0.3, 0.7, 0.98, 0.995])), STILL)
-check('99 % crossed between writes: t_f', t, 4.8e-5 + 2.4e-5/1.5)
+check('99 % crossed between writes: t_f', t, 4.8e-5 + 2.4e-5*2/3)
 check('99 % crossed between writes: yes', float(how == 'yes'), 1.0)
 fractions = [0.9069, 0.9836, 0.9899, 0.9899, 0.9899]
 t, how = end_of_filtration(list(zip([1.2e-4, 1.44e-4, 1.68e-4, 1.92e-4,
