@@ -145,6 +145,16 @@ add_filtration_check(rollingFrictionInput
     "rollingFriction input: all checks passed"
     ${filtrationDir}/runRollingFrictionInputTest.sh)
 
+# filtration.surfaceRangesInput: the surface forces' cut-offs and the
+#   neighbour skin of system/filtrationParameters checked by prepareRun.sh
+#   (each out of range refused, the skin at least twice the longest
+#   cut-off), written for the DEM, and used by the plugin (van der Waals
+#   between two spheres beyond the default cut-off against the closed
+#   form; the double layer's cut-off in its log)
+add_filtration_check(surfaceRangesInput
+    "surface ranges input: all checks passed"
+    ${filtrationDir}/runSurfaceRangesInputTest.sh)
+
 # filtration.gelSuspension: the flocculated suspension as one network
 #   (makeFlocs.py ... gel) at the tests' size against the same seed's
 #   flocs: one cluster, a tree of contacts, no overlap, the walls' margin,

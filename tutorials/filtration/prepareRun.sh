@@ -54,6 +54,22 @@ do
     checkParameter $params $key 0 -
 done
 checkParameter $params solidsFraction 0 0.64
+checkParameter $params vdwOuterCutoff 0 1e-3
+checkParameter $params doubleLayerOuterCutoff 0 1e-3
+checkParameter $params lubricationInnerCutoff 0 1e-6
+checkParameter $params lubricationOuterCutoff "$(param lubricationInnerCutoff)" 1e-3
+checkParameter $params neighbourSkin 0 -
+# The medium is a primitive wall, which lists the particles within half
+# the skin: the plugin refuses a skin below twice the longest cut-off at
+# start-up; here before anything is written
+skin=$(param neighbourSkin)
+longest=$(awk -v a="$(param vdwOuterCutoff)" -v b="$(param doubleLayerOuterCutoff)" \
+    -v c="$(param lubricationOuterCutoff)" 'BEGIN {
+        m = a; if (b > m) m = b; if (c > m) m = c; print m }')
+awk -v s="$skin" -v m="$longest" 'BEGIN { exit !(s >= 2*m) }' \
+    || { echo "$params: keyword 'neighbourSkin' is $skin; allowed range:" \
+             "neighbourSkin >= 2 x the longest cut-off = $(awk -v m="$longest" 'BEGIN { print 2*m }')" \
+             "(the medium lists the particles within half the skin)" 1>&2; exit 1; }
 checkParameter $params poissonsRatio -1 0.5
 # A value from 0 (off: so not checkParameter's open range) below 1
 fromZeroBelowOne()
@@ -85,12 +101,15 @@ E=$(param youngsModulus); nu=$(param poissonsRatio)
 e=$(param restitution); mu=$(param friction)
 A=$(param hamakerConstant); zeta=$(param zetaPotential)
 salt=$(param saltConcentration); rhop=$(param particleDensity)
+vdwOut=$(param vdwOuterCutoff); dlOut=$(param doubleLayerOuterCutoff)
+lubIn=$(param lubricationInnerCutoff); lubOut=$(param lubricationOuterCutoff)
 dt=$(foamDictionary -entry DEM/timeStep -value constant/couplingProperties)
 nc=$(foamDictionary -entry DEM/couplingInterval -value constant/couplingProperties)
 nw=$(foamDictionary -entry writeInterval -value system/controlDict)
 awk -v L="$width" -v H="$height" -v E="$E" -v nu="$nu" -v e="$e" \
     -v mu="$mu" -v mur="$rollingFriction" -v A="$A" -v zeta="$zeta" -v salt="$salt" \
-    -v variant="$(param variant)" -v writeSteps=$((nc*nw)) '
+    -v vdwOut="$vdwOut" -v dlOut="$dlOut" -v lubIn="$lubIn" -v lubOut="$lubOut" \
+    -v skin="$skin" -v variant="$(param variant)" -v writeSteps=$((nc*nw)) '
 BEGIN {
     print "# Written by prepareRun.sh from system/filtrationParameters (units micro)"
     printf "variable variant string %s\n", variant
@@ -105,6 +124,11 @@ BEGIN {
     printf "variable hamakerConstant equal %.10g\n", A*1e15
     printf "variable zetaPotential equal %.10g\n", zeta
     printf "variable saltConcentration equal %.10g\n", salt
+    printf "variable vdwOuterCutoff equal %.10g\n", vdwOut*1e6
+    printf "variable doubleLayerOuterCutoff equal %.10g\n", dlOut*1e6
+    printf "variable lubricationInnerCutoff equal %.10g\n", lubIn*1e6
+    printf "variable lubricationOuterCutoff equal %.10g\n", lubOut*1e6
+    printf "variable neighbourSkin equal %.10g\n", skin*1e6
     printf "variable writeSteps equal %d\n", writeSteps
 }' > DEM/filtration.liggghts
 
