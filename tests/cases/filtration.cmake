@@ -147,10 +147,10 @@ add_filtration_check(rollingFrictionInput
 
 # filtration.surfaceRangesInput: the surface forces' cut-offs and the
 #   neighbour skin of system/filtrationParameters checked by prepareRun.sh
-#   (each out of range refused, the skin at least twice the longest
-#   cut-off), written for the DEM, and used by the plugin (van der Waals
-#   between two spheres beyond the default cut-off against the closed
-#   form; the double layer's cut-off in its log)
+#   (each out of range refused), written for the DEM, and used by the
+#   plugin (van der Waals between two spheres beyond the default cut-off
+#   against the closed form; the double layer's cut-off and the pairs'
+#   reach, lubrication's outer cut-off plus the skin, in its log)
 add_filtration_check(surfaceRangesInput
     "surface ranges input: all checks passed"
     ${filtrationDir}/runSurfaceRangesInputTest.sh)

@@ -54,22 +54,14 @@ do
     checkParameter $params $key 0 -
 done
 checkParameter $params solidsFraction 0 0.64
-checkParameter $params vdwOuterCutoff 0 1e-3
-checkParameter $params doubleLayerOuterCutoff 0 1e-3
+# the outer cut-offs beyond the plugin's inner ones (van der Waals and
+# double layer 0.4 nm, lubrication lubricationInnerCutoff)
+checkParameter $params vdwOuterCutoff 0.4e-9 1e-3
+checkParameter $params doubleLayerOuterCutoff 0.4e-9 1e-3
 checkParameter $params lubricationInnerCutoff 0 1e-6
 checkParameter $params lubricationOuterCutoff "$(param lubricationInnerCutoff)" 1e-3
 checkParameter $params neighbourSkin 0 -
-# The medium is a primitive wall, which lists the particles within half
-# the skin: the plugin refuses a skin below twice the longest cut-off at
-# start-up; here before anything is written
 skin=$(param neighbourSkin)
-longest=$(awk -v a="$(param vdwOuterCutoff)" -v b="$(param doubleLayerOuterCutoff)" \
-    -v c="$(param lubricationOuterCutoff)" 'BEGIN {
-        m = a; if (b > m) m = b; if (c > m) m = c; print m }')
-awk -v s="$skin" -v m="$longest" 'BEGIN { exit !(s >= 2*m) }' \
-    || { echo "$params: keyword 'neighbourSkin' is $skin; allowed range:" \
-             "neighbourSkin >= 2 x the longest cut-off = $(awk -v m="$longest" 'BEGIN { print 2*m }')" \
-             "(the medium lists the particles within half the skin)" 1>&2; exit 1; }
 checkParameter $params poissonsRatio -1 0.5
 # A value from 0 (off: so not checkParameter's open range) below 1
 fromZeroBelowOne()

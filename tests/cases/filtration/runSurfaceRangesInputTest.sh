@@ -2,20 +2,19 @@
 # The surface forces' cut-offs and the neighbour skin of
 # system/filtrationParameters reach the DEM, and bad values stop
 # prepareRun.sh before anything is written:
-#  - each cut-off out of its range, the lubrication's outer cut-off not
-#    beyond its inner one, and a skin below twice the longest cut-off
-#    (whichever it is: van der Waals, double layer or lubrication; the
-#    filter medium, a primitive wall, lists the particles within half the
-#    skin) are refused with a message naming the file, the keyword, the
+#  - each cut-off out of its range (the outer ones not beyond the inner
+#    ones: the plugin's 0.4 nm, lubricationInnerCutoff) and a skin not
+#    above 0 are refused with a message naming the file, the keyword, the
 #    value and the allowed range, and no DEM files;
-#  - good values are written to DEM/filtration.liggghts in micrometres;
+#  - good values are written to DEM/filtration.liggghts in micrometres,
+#    and the DEM scripts use them (no literal cut-off or skin left);
 #  - LIGGGHTS with the plugin, given the case's contacts.liggghts and the
-#    written values (flocculated variant, van der Waals to 0.3 um), pulls
-#    two glass spheres 0.15 um apart (beyond the default 0.1 um) with the
-#    shifted Derjaguin force A R*/6 (1/h^2 - 1/h_out^2) within 1e-6, and
-#    with the stable variant reports the double layer's cut-off it was
-#    given.
-#
+#    written values: flocculated, with van der Waals to 0.3 um, two glass
+#    spheres 0.15 um apart (beyond the default 0.1 um) pull each other
+#    with the shifted Derjaguin force A R*/6 (1/h^2 - 1/h_out^2) within
+#    1e-6; stable, the plugin reports the double layer's cut-off it was
+#    given and lists its pairs to the lubrication's outer cut-off (made
+#    the longest, 0.4 um) and the skin.
 # (Values as foamDictionary prints them: the message quotes them so.)
 #
 # usage: runSurfaceRangesInputTest.sh workDir
@@ -23,24 +22,15 @@ set -e
 source "$(dirname "$0")/prepareRunInput.sh" "$1"
 set_() { sed -i "s/^$1 .*/$1 $2;/" $params; }
 
-refused vdwOuterCutoff 0 "0 < vdwOuterCutoff < 1e-3"
+refused vdwOuterCutoff 1e-10 "0.4e-9 < vdwOuterCutoff < 1e-3"
 set_ vdwOuterCutoff 0.1e-6
-refused doubleLayerOuterCutoff 0.01 "0 < doubleLayerOuterCutoff < 1e-3"
+refused doubleLayerOuterCutoff 0.01 "0.4e-9 < doubleLayerOuterCutoff < 1e-3"
 set_ doubleLayerOuterCutoff 0.05e-6
 refused lubricationInnerCutoff 2e-06 "0 < lubricationInnerCutoff < 1e-6"
 set_ lubricationInnerCutoff 0.01e-6
 refused lubricationOuterCutoff 5e-09 "1e-08 < lubricationOuterCutoff < 1e-3"
 set_ lubricationOuterCutoff 0.1e-6
-refused neighbourSkin -1 "0 < neighbourSkin < inf"
-refused neighbourSkin 1.5e-07 "neighbourSkin >= 2 x the longest cut-off = 2e-07"
-# the longest cut-off of each kind sets the skin's bound
-for key in vdwOuterCutoff doubleLayerOuterCutoff lubricationOuterCutoff
-do
-    default=$(foamDictionary -entry $key -value $params)
-    set_ $key 0.3e-6
-    refused neighbourSkin 5e-07 "neighbourSkin >= 2 x the longest cut-off = 6e-07"
-    set_ $key "$default"
-done
+refused neighbourSkin 0 "0 < neighbourSkin < inf"
 
 # Good values reach DEM/filtration.liggghts [um]
 set_ vdwOuterCutoff 0.3e-6
@@ -62,6 +52,13 @@ do
         || fail "$key: DEM/filtration.liggghts does not hold $want um"
 done
 echo "good values: written in um"
+for script in in.liggghts in.consolidation
+do
+    grep -q '^neighbor  *${neighbourSkin} bin$' constant/DEM/$script \
+        || fail "constant/DEM/$script: no 'neighbor \${neighbourSkin} bin'"
+done
+! grep -n 'Cutoff scalar [0-9.]' constant/DEM/surfaceForces.* \
+    || fail "a literal cut-off in constant/DEM/surfaceForces.*"
 
 # The plugin uses them: two spheres at a gap of 0.15 um on the x axis,
 # at rest (no contact, no lubrication), the force on each after run 0
@@ -105,7 +102,7 @@ runRanges log.flocculated
 expected=$(awk -v A="$A" -v d="$d" 'BEGIN {
     h = 0.15e-6; hOut = 0.3e-6
     printf "%.10g", A*(d/4)/6*(1/h^2 - 1/hOut^2)*1e9 }')
-forces=$(sed -n 's/^force on 1 \(.*\) nN, on 2 \(.*\) nN$/\1 \2/p' log.flocculated)
+forces=$(sed -n 's/^force on 1 \(.*\) nN, on 2 \(.*\) nN$/\1 \2/p' log.flocculated 2> /dev/null || true)
 awk -v f="$forces" -v e="$expected" 'BEGIN {
     split(f, F, " ")
     exit !(e > 0 && F[1] > 0 && (F[1] - e)/e < 1e-6 && (e - F[1])/e < 1e-6 && F[2] + F[1] == 0) }' \
@@ -113,6 +110,7 @@ awk -v f="$forces" -v e="$expected" 'BEGIN {
 echo "van der Waals at a gap of 0.15 um with the cut-off 0.3 um: $forces nN (closed form $expected)"
 
 set_ variant stable
+set_ lubricationOuterCutoff 0.4e-6
 rm -rf DEM
 "$COLLOIDFOAM_TUTORIALS/filtration/prepareRun.sh" -testSize > log.prepareRun \
     || fail "stable: prepareRun.sh failed"
@@ -120,6 +118,9 @@ runRanges log.stable
 grep -q "doubleLayerOuterCutoff 6e-08 m is" log.stable \
     || fail "stable: the plugin does not report doubleLayerOuterCutoff 6e-08 m ($(grep -m1 doubleLayerOuterCutoff log.stable))"
 echo "stable: $(grep -m1 'doubleLayerOuterCutoff' log.stable)"
+grep -q "the colloid range 0.4 or half the skin, the larger, plus the skin 0.6)" log.stable \
+    || fail "stable: the pairs not listed to the lubrication's 0.4 um plus the skin 0.6 um ($(grep -m1 'colloid pair list' log.stable))"
+echo "stable: $(grep -m1 'colloid pair list' log.stable)"
 
 [ "$failures" -eq 0 ] || { echo "$failures failures"; exit 1; }
 echo "surface ranges input: all checks passed"
